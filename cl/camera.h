@@ -1,0 +1,59 @@
+// Camera rays: the course's pinhole camera with an optional thin lens.
+#ifndef RT_CAMERA_H
+#define RT_CAMERA_H
+
+#include "features.h"
+#include "ray.h"
+#include "sampler.h"
+#include "scene_types.h"
+
+// Maps [0,1)^2 to the unit disk with Shirley and Chiu's concentric map, so strata stay
+// compact (used only by the optional disk lens).
+RT_DEVICE float2 SampleConcentricDisk(float2 u) {
+  float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
+  if (ox == 0.0f && oy == 0.0f) return make_float2(0.0f, 0.0f);
+  float r, theta;
+  if (fabs(ox) > fabs(oy)) {
+    r = ox;
+    theta = (RT_PI / 4.0f) * (oy / ox);
+  } else {
+    r = oy;
+    theta = (RT_PI / 2.0f) - (RT_PI / 4.0f) * (ox / oy);
+  }
+  return make_float2(r * cos(theta), r * sin(theta));
+}
+
+// The ray through film position (px, py) in pixels (x right, y down) at shutter time
+// `time`, through lens sample `lens` in [0,1)^2.
+RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, float px, float py, float2 lens,
+                                float time) {
+  RT_GLOBAL const Camera* cam = &sd->header->camera;
+  float su = (cam->right - cam->left) * (px / (float)cam->width);
+  float sv = (cam->top - cam->bottom) * (py / (float)cam->height);
+  float3 corner = cam->position - cam->w * cam->near_distance + cam->u * cam->left +
+                  cam->v * cam->top;
+  float3 film = corner + cam->u * su - cam->v * sv;
+  float3 dir = Normalize(film - cam->position);
+  Ray ray = MakeRay(cam->position, dir, RT_INFINITY, time);
+  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {
+    // The focal plane lies focus_distance along the gaze; every lens point aims at where
+    // the pinhole ray meets it.
+    float tfocus = cam->focus_distance / Dot(dir, -cam->w);
+    float3 focus = cam->position + dir * tfocus;
+    float2 l = make_float2(lens.x - 0.5f, lens.y - 0.5f);
+    if (cam->lens == RT_LENS_DISK) {
+      float2 disk = SampleConcentricDisk(lens);
+      l = make_float2(0.5f * disk.x, 0.5f * disk.y);
+    }
+    float3 origin = cam->position + (cam->u * l.x + cam->v * l.y) * cam->aperture;
+    ray.origin = origin;
+    ray.direction = Normalize(focus - origin);
+  }
+  // Camera rays start on the image plane: geometry nearer than NearDistance is clipped,
+  // which the course's files rely on (cornellbox_boxes_dynamic puts its camera behind a
+  // wall and its image plane just inside the box).
+  ray.origin = ray.origin + ray.direction * (cam->near_distance / Dot(ray.direction, -cam->w));
+  return ray;
+}
+
+#endif  // RT_CAMERA_H

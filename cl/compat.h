@@ -1,0 +1,90 @@
+// Qualifier macros and vector types that let the same headers compile as OpenCL C 1.2
+// (the kernel) and as C++17 (the CPU reference). Everything below this file is written
+// in the common subset: no recursion, no templates, no references, explicit address
+// spaces through RT_GLOBAL / RT_PRIVATE.
+#ifndef RT_COMPAT_H
+#define RT_COMPAT_H
+
+#ifdef __OPENCL_C_VERSION__
+
+#define RT_DEVICE static inline
+#define RT_GLOBAL __global
+#define RT_PRIVATE __private
+#define RT_CONSTANT __constant
+#define make_float3(x, y, z) ((float3)((x), (y), (z)))
+#define make_float2(x, y) ((float2)((x), (y)))
+#define rt_float_as_int(f) as_int(f)
+#define rt_int_as_float(i) as_float(i)
+// The CPU reference rounds every operation; contraction into FMA would make the two
+// devices disagree in the last bit, so it is off here too.
+#pragma OPENCL FP_CONTRACT OFF
+
+#else  // C++17
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#define RT_DEVICE inline
+#define RT_GLOBAL
+#define RT_PRIVATE
+#define RT_CONSTANT static const
+
+typedef std::uint32_t uint;
+
+// Same size and alignment as OpenCL's float3 (16 bytes), so buffers match byte for byte.
+struct alignas(16) float3 {
+  float x, y, z, w_pad;
+};
+struct alignas(16) float4 {
+  float x, y, z, w;
+};
+struct alignas(8) float2 {
+  float x, y;
+};
+
+inline float3 make_float3(float x, float y, float z) { return float3{x, y, z, 0.0f}; }
+inline float2 make_float2(float x, float y) { return float2{x, y}; }
+
+inline float3 operator+(float3 a, float3 b) { return make_float3(a.x + b.x, a.y + b.y, a.z + b.z); }
+inline float3 operator-(float3 a, float3 b) { return make_float3(a.x - b.x, a.y - b.y, a.z - b.z); }
+inline float3 operator*(float3 a, float3 b) { return make_float3(a.x * b.x, a.y * b.y, a.z * b.z); }
+inline float3 operator/(float3 a, float3 b) { return make_float3(a.x / b.x, a.y / b.y, a.z / b.z); }
+inline float3 operator*(float3 a, float s) { return make_float3(a.x * s, a.y * s, a.z * s); }
+inline float3 operator*(float s, float3 a) { return make_float3(a.x * s, a.y * s, a.z * s); }
+inline float3 operator/(float3 a, float s) { return make_float3(a.x / s, a.y / s, a.z / s); }
+inline float3 operator-(float3 a) { return make_float3(-a.x, -a.y, -a.z); }
+inline float3& operator+=(float3& a, float3 b) { return a = a + b; }
+inline float3& operator*=(float3& a, float3 b) { return a = a * b; }
+
+// Scalar maths under the names OpenCL C gives them. Vector helpers (dot, cross,
+// normalize) live in util/math.h and are written out by hand for both devices, because
+// OpenCL's built-in versions may round differently from any C++ formula.
+using std::cos;
+using std::exp;
+using std::fabs;
+using std::floor;
+using std::fmax;
+using std::fmin;
+using std::isfinite;
+using std::pow;
+using std::sin;
+using std::sqrt;
+using std::tan;
+inline float clamp(float x, float lo, float hi) { return std::fmin(std::fmax(x, lo), hi); }
+inline float mix(float a, float b, float t) { return a + (b - a) * t; }
+
+inline int rt_float_as_int(float f) {
+  int i;
+  std::memcpy(&i, &f, sizeof i);
+  return i;
+}
+inline float rt_int_as_float(int i) {
+  float f;
+  std::memcpy(&f, &i, sizeof f);
+  return f;
+}
+
+#endif
+
+#endif  // RT_COMPAT_H

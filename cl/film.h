@@ -1,0 +1,43 @@
+// Accumulation of a pixel's samples, shared by the CPU reference and the kernel so both
+// sum in the same order and agree to the bit when their samples do.
+#ifndef RT_FILM_H
+#define RT_FILM_H
+
+#include "integrator.h"
+
+// Per pixel: sum of weight * radiance (xyz) and of weights (w); sum of squared radiance
+// (xyz) and the sample count (w), from which compare/ forms per-pixel variances.
+typedef struct PixelAccum {
+  float4 sum;
+  float4 sum_sq;
+  uint rays;  // Rays cast for this pixel, for the rays/s figures.
+  uint pad0, pad1, pad2;
+} PixelAccum;
+
+RT_DEVICE float4 AddFloat4(float4 a, float3 v, float w) {
+  a.x += v.x;
+  a.y += v.y;
+  a.z += v.z;
+  a.w += w;
+  return a;
+}
+
+// Runs samples [begin, end) of pixel (x, y) into *acc. The first sample of a pixel also
+// records its deterministic primary-hit facts.
+RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int begin, int end,
+                               RT_GLOBAL PixelAccum* acc, RT_GLOBAL PrimaryInfo* primary) {
+  PixelAccum a = *acc;
+  uint rays = 0u;
+  for (int s = begin; s < end; ++s) {
+    float w;
+    PrimaryInfo info;
+    float3 l = RenderSample(sd, x, y, (uint)s, &w, &info, &rays);
+    a.sum = AddFloat4(a.sum, l * w, w);
+    a.sum_sq = AddFloat4(a.sum_sq, l * l, 1.0f);
+    if (s == 0) *primary = info;
+  }
+  a.rays += rays;
+  *acc = a;
+}
+
+#endif  // RT_FILM_H

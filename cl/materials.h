@@ -1,0 +1,59 @@
+// Reflection models: the course's Blinn-Phong, and Fresnel reflectance for dielectrics
+// and conductors.
+#ifndef RT_MATERIALS_H
+#define RT_MATERIALS_H
+
+#include "util/math.h"
+#include "scene_types.h"
+
+// Diffuse plus Blinn-Phong specular for irradiance `e` arriving from unit direction wi
+// at a point with unit normal n, seen from unit direction wo.
+RT_DEVICE float3 BlinnPhong(RT_GLOBAL const Material* m, float3 n, float3 wo, float3 wi,
+                            float3 e) {
+  float cos_i = Dot(n, wi);
+  if (cos_i <= 0.0f) return Vec3(0.0f);
+  float3 h = Normalize(wi + wo);
+  float cos_h = fmax(0.0f, Dot(n, h));
+  float spec = cos_h > 0.0f ? pow(cos_h, m->phong_exponent) : 0.0f;
+  return (m->diffuse * cos_i + m->specular * spec) * e;
+}
+
+// Unpolarized Fresnel reflectance of a dielectric interface for light going from index
+// eta_i to eta_t; cos_i > 0 is the cosine on the incident side. Total internal
+// reflection returns 1 and *cos_t = 0.
+RT_DEVICE float FrDielectric(float cos_i, float eta_i, float eta_t, RT_PRIVATE float* cos_t) {
+  float sin2_t = (eta_i / eta_t) * (eta_i / eta_t) * fmax(0.0f, 1.0f - cos_i * cos_i);
+  if (sin2_t >= 1.0f) {
+    *cos_t = 0.0f;
+    return 1.0f;
+  }
+  float ct = sqrt(1.0f - sin2_t);
+  *cos_t = ct;
+  float r_par = (eta_t * cos_i - eta_i * ct) / (eta_t * cos_i + eta_i * ct);
+  float r_perp = (eta_i * cos_i - eta_t * ct) / (eta_i * cos_i + eta_t * ct);
+  return 0.5f * (r_par * r_par + r_perp * r_perp);
+}
+
+// Fresnel reflectance of a conductor with complex index eta + i k seen from air, in the
+// form the course uses (the common approximation that drops the small cross terms).
+RT_DEVICE float FrConductor(float cos_i, float eta, float k) {
+  float c2 = cos_i * cos_i;
+  float nk2 = eta * eta + k * k;
+  float two_n_c = 2.0f * eta * cos_i;
+  float rs = (nk2 - two_n_c + c2) / (nk2 + two_n_c + c2);
+  float rp = (nk2 * c2 - two_n_c + 1.0f) / (nk2 * c2 + two_n_c + 1.0f);
+  return 0.5f * (rs + rp);
+}
+
+// Refracted direction of unit incident direction d through unit normal n facing the
+// incident side, given eta = eta_i / eta_t and cos_t from FrDielectric.
+RT_DEVICE float3 Refract(float3 d, float3 n, float eta, float cos_i, float cos_t) {
+  return Normalize(d * eta + n * (eta * cos_i - cos_t));
+}
+
+// Beer-Lambert attenuation over a path of length `distance` inside a medium.
+RT_DEVICE float3 BeerLambert(float3 absorption, float distance) {
+  return Exp3(absorption * (-distance));
+}
+
+#endif  // RT_MATERIALS_H

@@ -1,0 +1,55 @@
+// Counter-based sampling: every number is a hash of (pixel, sample, dimension, seed).
+// The first camera dimensions are stratified: sample s of an n x n pattern falls in
+// stratum PermutationElement(s), jittered inside it, with a permutation per dimension
+// so the pixel, lens, time and light patterns are decorrelated.
+#ifndef RT_SAMPLER_H
+#define RT_SAMPLER_H
+
+#include "util/hash.h"
+#include "util/math.h"
+
+// Dimensions of the camera sample, in the order the course names them.
+#define RT_DIM_PIXEL 0
+#define RT_DIM_LENS 2
+#define RT_DIM_TIME 4
+// Later dimensions are keyed by the ray's place in the ray tree (see integrator.h).
+#define RT_DIM_FIRST_FREE 5
+
+typedef struct SampleKey {
+  uint pixel;
+  uint sample;
+  uint samples;  // Samples per pixel.
+  uint strata;   // sqrt(samples) when a perfect square, else 0.
+  uint seed;
+} SampleKey;
+
+RT_DEVICE float Random1D(SampleKey k, uint dimension) {
+  return UintToUnitFloat(Hash4(k.pixel, k.sample, dimension, k.seed));
+}
+
+RT_DEVICE float2 Random2D(SampleKey k, uint dimension) {
+  return make_float2(Random1D(k, dimension), Random1D(k, dimension + 0x68bc21ebu));
+}
+
+// One point of a jittered n x n pattern per sample, in [0, 1)^2; random when the sample
+// count is not a perfect square.
+RT_DEVICE float2 Stratified2D(SampleKey k, uint dimension) {
+  float2 xi = Random2D(k, dimension);
+  if (k.strata == 0u) return xi;
+  uint key = Hash4(k.pixel, dimension, k.seed, 0x51ed2701u);
+  uint stratum = PermutationElement(k.sample, k.samples, key);
+  float inv = 1.0f / (float)k.strata;
+  return make_float2(((float)(stratum % k.strata) + xi.x) * inv,
+                     ((float)(stratum / k.strata) + xi.y) * inv);
+}
+
+// A jittered 1D pattern of `samples` strata (for the shutter time).
+RT_DEVICE float Stratified1D(SampleKey k, uint dimension) {
+  float xi = Random1D(k, dimension);
+  if (k.samples <= 1u) return xi;
+  uint key = Hash4(k.pixel, dimension, k.seed, 0x2c1b3c6du);
+  uint stratum = PermutationElement(k.sample, k.samples, key);
+  return ((float)stratum + xi) / (float)k.samples;
+}
+
+#endif  // RT_SAMPLER_H

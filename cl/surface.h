@@ -1,0 +1,61 @@
+// Turns a hit record into the surface point the shading code needs.
+#ifndef RT_SURFACE_H
+#define RT_SURFACE_H
+
+#include "features.h"
+#include "ray.h"
+#include "transform.h"
+
+typedef struct SurfacePoint {
+  float3 p;   // World-space position.
+  float3 n;   // Unit shading normal (interpolated on smooth meshes).
+  float3 ng;  // Unit geometric normal.
+  int material;
+} SurfacePoint;
+
+// The position is rebuilt from the primitive (barycentrics on a triangle, a projection
+// onto the unit sphere) rather than from origin + t * direction, so its error does not
+// grow with the distance travelled.
+RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit) {
+  RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
+  int transformed =
+      RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
+  SurfacePoint sp;
+  sp.material = inst->material;
+  float3 p_obj, ng_obj, n_obj;
+  if (hit.primitive < 0) {
+    float3 o = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
+    float3 d = ray.direction;
+    if (transformed) {
+      o = TransformPoint(inst->world_to_object, o);
+      d = TransformVector(inst->world_to_object, d);
+    }
+    p_obj = Normalize(o + d * hit.t);
+    ng_obj = p_obj;
+    n_obj = p_obj;
+  } else {
+    RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
+    float b0 = 1.0f - hit.b1 - hit.b2;
+    p_obj = tri->v0 * b0 + tri->v1 * hit.b1 + tri->v2 * hit.b2;
+    ng_obj = Cross(tri->v1 - tri->v0, tri->v2 - tri->v0);
+    n_obj = ng_obj;
+    if (RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0) {
+      RT_GLOBAL const TriangleNormals* tn = &sd->normals[hit.primitive];
+      n_obj = tn->n0 * b0 + tn->n1 * hit.b1 + tn->n2 * hit.b2;
+    }
+  }
+  if (transformed) {
+    sp.p = TransformPoint(inst->object_to_world, p_obj);
+    sp.ng = Normalize(TransformNormalByInverse(inst->world_to_object, ng_obj));
+    sp.n = Normalize(TransformNormalByInverse(inst->world_to_object, n_obj));
+  } else {
+    sp.p = p_obj;
+    sp.ng = Normalize(ng_obj);
+    sp.n = Normalize(n_obj);
+  }
+  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0)
+    sp.p = sp.p + inst->motion * ray.time;
+  return sp;
+}
+
+#endif  // RT_SURFACE_H

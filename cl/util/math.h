@@ -1,0 +1,62 @@
+// Vector helpers shared by both devices. They are spelled out component by component so
+// that the CPU reference and the kernel evaluate the same rounded operations in the same
+// order (FP contraction is off on both sides).
+#ifndef RT_UTIL_MATH_H
+#define RT_UTIL_MATH_H
+
+#include "../compat.h"
+
+#define RT_PI 3.14159265358979323846f
+#define RT_INFINITY 3.402823466e+38f
+
+RT_DEVICE float Dot(float3 a, float3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+RT_DEVICE float3 Cross(float3 a, float3 b) {
+  return make_float3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+
+RT_DEVICE float Length(float3 a) { return sqrt(Dot(a, a)); }
+
+RT_DEVICE float3 Normalize(float3 a) { return a * (1.0f / Length(a)); }
+
+RT_DEVICE float3 Vec3(float s) { return make_float3(s, s, s); }
+
+RT_DEVICE float MaxComponent(float3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+
+RT_DEVICE float Component(float3 a, int axis) { return axis == 0 ? a.x : (axis == 1 ? a.y : a.z); }
+
+RT_DEVICE float3 Min3(float3 a, float3 b) {
+  return make_float3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
+}
+
+RT_DEVICE float3 Max3(float3 a, float3 b) {
+  return make_float3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
+}
+
+RT_DEVICE float3 Abs3(float3 a) { return make_float3(fabs(a.x), fabs(a.y), fabs(a.z)); }
+
+RT_DEVICE float3 Exp3(float3 a) { return make_float3(exp(a.x), exp(a.y), exp(a.z)); }
+
+RT_DEVICE int MaxDimension(float3 a) {
+  return (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+}
+
+RT_DEVICE float3 Permute3(float3 a, int x, int y, int z) {
+  return make_float3(Component(a, x), Component(a, y), Component(a, z));
+}
+
+RT_DEVICE float Clamp(float x, float lo, float hi) { return fmin(fmax(x, lo), hi); }
+
+// A right-handed orthonormal basis around a unit vector n (Duff et al. 2017), used for
+// glossy lobes; it has no branch that could flip between devices.
+RT_DEVICE void CoordinateSystem(float3 n, RT_PRIVATE float3* u, RT_PRIVATE float3* v) {
+  float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (sign + n.z);
+  float b = n.x * n.y * a;
+  *u = make_float3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  *v = make_float3(b, sign + n.y * n.y * a, -n.y);
+}
+
+RT_DEVICE float3 Reflect(float3 wo, float3 n) { return n * (2.0f * Dot(wo, n)) - wo; }
+
+#endif  // RT_UTIL_MATH_H

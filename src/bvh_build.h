@@ -1,0 +1,37 @@
+// Binned-SAH BVH construction on the host. The nodes use the layout of cl/scene_types.h
+// and are appended to one array shared by every mesh and the top level.
+#pragma once
+
+#include <vector>
+
+#include "cl/scene_types.h"
+
+namespace rt {
+
+struct Aabb {
+  float lo[3] = {3.4e38f, 3.4e38f, 3.4e38f};
+  float hi[3] = {-3.4e38f, -3.4e38f, -3.4e38f};
+
+  void grow(const Aabb& b);
+  void grow(float x, float y, float z);
+  float area() const;
+  bool empty() const { return lo[0] > hi[0]; }
+};
+
+// Build-quality settings (the speed/accuracy trade measures them).
+struct BvhOptions {
+  int bins = 16;     // SAH bins per axis.
+  int max_leaf = 4;  // Primitives per leaf the SAH may stop at (the top level uses 1).
+};
+
+struct BvhBuildResult {
+  int root = -1;
+  int depth = 0;
+};
+
+// Builds a BVH over `boxes` into `nodes`. Leaves refer to positions first..first+count-1
+// of `order` shifted by `prim_offset`; the caller stores its primitives in that order.
+BvhBuildResult build_bvh(const std::vector<Aabb>& boxes, const BvhOptions& options, int max_leaf,
+                         int prim_offset, std::vector<BvhNode>& nodes, std::vector<int>& order);
+
+}  // namespace rt

@@ -1,0 +1,31 @@
+// Command-line options of the raytracer executable.
+#pragma once
+
+#include <string>
+
+#include "flat_scene.h"
+
+namespace rt {
+
+enum class Device { kAuto, kCpu, kOpenCl };
+
+struct CliOptions {
+  std::string scene;
+  std::string output_dir = ".";
+  Device device = Device::kAuto;
+  std::string cl_device;  // Index or name substring; empty: the first GPU, else the first device.
+  bool generic_kernel = false;
+  bool kernel_cache = true;
+  bool list_devices = false;
+  int threads = 0;
+  int camera = -1;  // -1: every camera.
+  bool quiet = false;
+  bool stats = false;
+  RenderOptions render;
+};
+
+// Parses argv; on --help / --version prints and exits 0; on a bad option prints one line
+// and the usage hint, and exits 2.
+CliOptions parse_cli(int argc, char** argv);
+
+}  // namespace rt

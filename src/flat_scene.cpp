@@ -1,0 +1,229 @@
+#include "flat_scene.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "cl/features.h"
+
+namespace rt {
+
+// C++ and OpenCL C must agree on every byte of the shared structs.
+static_assert(sizeof(float3) == 16 && alignof(float3) == 16, "float3 must match OpenCL");
+static_assert(sizeof(Material) == 112, "Material layout");
+static_assert(sizeof(AreaLight) == 96, "AreaLight layout");
+static_assert(sizeof(Camera) == 112, "Camera layout");
+static_assert(sizeof(Instance) == 128, "Instance layout");
+static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
+static_assert(sizeof(SceneHeader) == 192, "SceneHeader layout");
+
+namespace {
+
+void set_rows(float4 rows[3], const Mat4& m) {
+  for (int r = 0; r < 3; ++r)
+    rows[r] = float4{static_cast<float>(m(r, 0)), static_cast<float>(m(r, 1)),
+                     static_cast<float>(m(r, 2)), static_cast<float>(m(r, 3))};
+}
+
+Aabb transformed_box(const Aabb& b, const Mat4& m, Vec3d motion) {
+  Aabb out;
+  for (int c = 0; c < 8; ++c) {
+    Vec3d p = m.point({(c & 1) ? b.hi[0] : b.lo[0], (c & 2) ? b.hi[1] : b.lo[1],
+                       (c & 4) ? b.hi[2] : b.lo[2]});
+    for (int t = 0; t < 2; ++t) {
+      Vec3d q = p + motion * t;
+      // Widen by a relative ulp so float rounding of the transform cannot shrink the box.
+      out.grow(std::nextafter(static_cast<float>(q.x), -3.4e38f),
+               std::nextafter(static_cast<float>(q.y), -3.4e38f),
+               std::nextafter(static_cast<float>(q.z), -3.4e38f));
+      out.grow(std::nextafter(static_cast<float>(q.x), 3.4e38f),
+               std::nextafter(static_cast<float>(q.y), 3.4e38f),
+               std::nextafter(static_cast<float>(q.z), 3.4e38f));
+    }
+  }
+  return out;
+}
+
+// Area-weighted vertex normals: each face adds its unnormalized cross product.
+std::vector<Vec3d> vertex_normals(const MeshDesc& mesh) {
+  std::vector<Vec3d> n(mesh.positions.size());
+  for (auto& t : mesh.triangles) {
+    Vec3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    Vec3d f = cross(b - a, c - a);
+    for (int k = 0; k < 3; ++k) n[t[k]] = n[t[k]] + f;
+  }
+  for (auto& v : n)
+    if (length(v) > 0) v = normalize(v);
+  return n;
+}
+
+bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+}  // namespace
+
+SceneData FlatScene::view() const {
+  SceneData sd;
+  sd.header = &header;
+  sd.materials = materials.data();
+  sd.instances = instances.data();
+  sd.nodes = nodes.data();
+  sd.triangles = triangles.data();
+  sd.normals = normals.data();
+  sd.point_lights = point_lights.data();
+  sd.area_lights = area_lights.data();
+  return sd;
+}
+
+FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
+  auto start = std::chrono::steady_clock::now();
+  FlatScene f;
+  f.materials = scene.materials;
+  f.point_lights = scene.point_lights;
+  f.area_lights = scene.area_lights;
+  // Bottom level: one BVH per mesh, whatever the number of its instances.
+  std::vector<int> blas_root(scene.meshes.size(), -1);
+  std::vector<Aabb> blas_box(scene.meshes.size());
+  for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
+    const MeshDesc& mesh = scene.meshes[mi];
+    if (mesh.triangles.empty()) continue;
+    std::vector<Aabb> boxes(mesh.triangles.size());
+    for (size_t i = 0; i < mesh.triangles.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        Vec3d p = mesh.positions[mesh.triangles[i][k]];
+        boxes[i].grow(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+      }
+    std::vector<int> order;
+    int offset = static_cast<int>(f.triangles.size());
+    BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, f.nodes, order);
+    blas_root[mi] = r.root;
+    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, r.depth);
+    for (auto& b : boxes) blas_box[mi].grow(b);
+    std::vector<Vec3d> vn;
+    if (mesh.smooth) vn = vertex_normals(mesh);
+    for (int i : order) {
+      const auto& t = mesh.triangles[i];
+      Triangle tri;
+      tri.v0 = to_float3(mesh.positions[t[0]]);
+      tri.v1 = to_float3(mesh.positions[t[1]]);
+      tri.v2 = to_float3(mesh.positions[t[2]]);
+      f.triangles.push_back(tri);
+      TriangleNormals tn{};
+      if (mesh.smooth) {
+        tn.n0 = to_float3(vn[t[0]]);
+        tn.n1 = to_float3(vn[t[1]]);
+        tn.n2 = to_float3(vn[t[2]]);
+      }
+      f.normals.push_back(tn);
+    }
+  }
+  // Top level: one leaf per instance, boxes covering the whole shutter interval.
+  std::vector<Instance> unordered;
+  std::vector<Aabb> boxes;
+  Aabb unit;
+  unit.grow(-1, -1, -1);
+  unit.grow(1, 1, 1);
+  for (const ObjectDesc& o : scene.objects) {
+    bool sphere = o.kind == ObjectDesc::kSphere;
+    if (!sphere && blas_root[o.mesh] < 0) continue;  // Nothing left after degenerates.
+    Instance inst{};
+    bool ok;
+    Mat4 inv = o.transform.affine_inverse(&ok);
+    set_rows(inst.world_to_object, inv);
+    set_rows(inst.object_to_world, o.transform);
+    inst.motion = to_float3(o.motion);
+    inst.kind = sphere ? RT_INSTANCE_SPHERE : RT_INSTANCE_MESH;
+    inst.blas_root = sphere ? -1 : blas_root[o.mesh];
+    inst.material = o.material;
+    inst.flags = (o.transform.is_identity() ? 0 : RT_INSTANCE_TRANSFORMED) |
+                 (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
+                 (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
+    unordered.push_back(inst);
+    boxes.push_back(transformed_box(sphere ? unit : blas_box[o.mesh], o.transform, o.motion));
+  }
+  std::vector<int> order;
+  BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, f.nodes, order);
+  for (int i : order) f.instances.push_back(unordered[i]);
+  f.header.tlas_root = top.root;
+  f.stats.tlas_depth = top.depth;
+  f.stats.nodes = f.nodes.size();
+  f.stats.triangles = f.triangles.size();
+  f.stats.instances = f.instances.size();
+  // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
+  if (f.nodes.empty()) f.nodes.emplace_back();
+  if (f.instances.empty()) f.instances.emplace_back();
+  if (f.triangles.empty()) f.triangles.emplace_back(), f.normals.emplace_back();
+  if (f.materials.empty()) f.materials.emplace_back();
+  if (f.point_lights.empty()) f.point_lights.emplace_back();
+  if (f.area_lights.empty()) f.area_lights.emplace_back();
+  SceneHeader& h = f.header;
+  h.background = to_float3(scene.background);
+  h.ambient_light = to_float3(scene.ambient);
+  h.shadow_epsilon = options.use_scene_epsilon ? static_cast<float>(scene.shadow_epsilon) : 0.0f;
+  h.intersection_epsilon = static_cast<float>(scene.intersection_epsilon);
+  h.max_depth = scene.max_depth;
+  h.num_point_lights = static_cast<int>(scene.point_lights.size());
+  h.num_area_lights = static_cast<int>(scene.area_lights.size());
+  h.num_instances = static_cast<int>(f.stats.instances);
+  h.seed = options.seed;
+  h.filter = options.filter;
+  h.filter_sigma = options.filter_sigma;
+  h.flags = (options.cull_back_faces ? RT_FLAG_CULL_BACK_FACES : 0) |
+            (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0);
+  f.stats.bvh_build_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return f;
+}
+
+void set_camera(FlatScene& flat, const SceneDesc& scene, int camera,
+                const RenderOptions& options) {
+  const CameraDesc& c = scene.cameras[camera];
+  Camera& cam = flat.header.camera;
+  Vec3d w = normalize(c.gaze) * -1.0;
+  Vec3d u = normalize(cross(c.up, w));
+  Vec3d v = cross(w, u);
+  cam.position = to_float3(c.position);
+  cam.u = to_float3(u);
+  cam.v = to_float3(v);
+  cam.w = to_float3(w);
+  cam.left = static_cast<float>(c.left);
+  cam.right = static_cast<float>(c.right);
+  cam.bottom = static_cast<float>(c.bottom);
+  cam.top = static_cast<float>(c.top);
+  cam.near_distance = static_cast<float>(c.near_distance);
+  cam.aperture = static_cast<float>(c.aperture);
+  cam.focus_distance = static_cast<float>(c.focus_distance);
+  cam.lens = options.lens;
+  cam.width = c.width;
+  cam.height = c.height;
+  cam.samples = options.spp > 0 ? options.spp : c.samples;
+  int root = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cam.samples))));
+  cam.strata = root * root == cam.samples ? root : 0;
+  flat.header.features = scene_features(scene, camera, options);
+}
+
+int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options) {
+  int f = 0;
+  std::vector<bool> used(scene.materials.size());
+  for (const ObjectDesc& o : scene.objects) {
+    f |= o.kind == ObjectDesc::kSphere ? RT_FEATURE_SPHERES : RT_FEATURE_TRIANGLES;
+    if (!o.transform.is_identity()) f |= RT_FEATURE_TRANSFORMS;
+    if (o.kind == ObjectDesc::kMesh && scene.meshes[o.mesh].smooth) f |= RT_FEATURE_SMOOTH;
+    if (!is_zero(o.motion)) f |= RT_FEATURE_MOTION_BLUR;
+    used[o.material] = true;
+  }
+  for (size_t i = 0; i < used.size(); ++i) {
+    if (!used[i]) continue;
+    const Material& m = scene.materials[i];
+    if (m.type == RT_MATERIAL_MIRROR) f |= RT_FEATURE_MIRROR;
+    if (m.type == RT_MATERIAL_CONDUCTOR) f |= RT_FEATURE_CONDUCTOR;
+    if (m.type == RT_MATERIAL_DIELECTRIC) f |= RT_FEATURE_DIELECTRIC;
+    if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
+  }
+  if (!scene.point_lights.empty()) f |= RT_FEATURE_POINT_LIGHTS;
+  if (!scene.area_lights.empty()) f |= RT_FEATURE_AREA_LIGHTS;
+  const CameraDesc& c = scene.cameras[camera];
+  if (c.aperture > 0) f |= RT_FEATURE_DEPTH_OF_FIELD;
+  if ((options.spp > 0 ? options.spp : c.samples) > 1) f |= RT_FEATURE_MULTISAMPLE;
+  return f;
+}
+
+}  // namespace rt

@@ -1,0 +1,21 @@
+// Minimal PLY mesh reader: positions, optional normals and triangulated faces.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct PlyMesh {
+  std::vector<std::array<float, 3>> positions;
+  std::vector<std::array<float, 3>> normals;  // empty when the file has no nx/ny/nz
+  std::vector<std::array<int, 3>> triangles;  // 0-based; quads and n-gons fan-triangulated
+};
+
+// Reads an ASCII, binary_little_endian or binary_big_endian PLY file.
+// Throws rt::InputError with a one-line message naming the file, the element/property and the
+// bad value.
+PlyMesh read_ply(const std::string& path);
+
+}  // namespace rt

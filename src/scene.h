@@ -1,0 +1,64 @@
+// The scene as read from the course's XML format, before flattening for the devices.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cl/scene_types.h"
+#include "mat4.h"
+
+namespace rt {
+
+struct CameraDesc {
+  std::string image_name;
+  Vec3d position, gaze, up;
+  double left = -1, right = 1, bottom = -1, top = 1, near_distance = 1;
+  int width = 0, height = 0;
+  int samples = 1;
+  double aperture = 0, focus_distance = 1;
+};
+
+// A triangle mesh in its own object space; instances share it.
+struct MeshDesc {
+  std::string element;  // For messages, e.g. "Mesh id=3".
+  std::vector<Vec3d> positions;
+  std::vector<std::array<int, 3>> triangles;
+  bool smooth = false;
+};
+
+struct ObjectDesc {
+  enum Kind { kMesh, kSphere };
+  Kind kind = kMesh;
+  std::string element;
+  int mesh = -1;  // Index into SceneDesc::meshes.
+  int material = 0;
+  Mat4 transform;  // Object to world; for spheres it includes centre and radius.
+  Vec3d motion;    // World-space translation over the shutter.
+};
+
+struct SceneDesc {
+  std::string file;
+  std::vector<CameraDesc> cameras;
+  Vec3d background, ambient;
+  double shadow_epsilon = 1e-3;
+  double intersection_epsilon = 1e-6;
+  int max_depth = 6;
+  std::vector<PointLight> point_lights;
+  std::vector<AreaLight> area_lights;
+  std::vector<Material> materials;
+  std::vector<MeshDesc> meshes;
+  std::vector<ObjectDesc> objects;
+  int degenerate_triangles = 0;  // Skipped at load time, reported by --stats.
+  std::vector<std::string> warnings;
+};
+
+// Reads a scene file; throws rt::InputError with one line naming the file, the element
+// and the value when the scene cannot be rendered. Warnings (unknown elements, skipped
+// degenerate triangles) are collected in SceneDesc::warnings.
+SceneDesc load_scene(const std::string& path);
+
+inline float3 to_float3(Vec3d v) {
+  return make_float3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+}
+
+}  // namespace rt

@@ -1,0 +1,516 @@
+// Reads the METU CENG795 scene format (assignments 1-3 and the older dialects seen in
+// the course's files) with tinyxml2.
+#include <tinyxml2.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "errors.h"
+#include "ply.h"
+#include "scene.h"
+
+namespace rt {
+namespace {
+
+using tinyxml2::XMLElement;
+
+std::string describe(const XMLElement* e) {
+  std::string s = e->Name();
+  if (const char* id = e->Attribute("id")) s += std::string(" id=") + id;
+  return s;
+}
+
+std::string path_of(const XMLElement* e) {
+  std::string s = describe(e);
+  for (auto* p = e->Parent() ? e->Parent()->ToElement() : nullptr; p;
+       p = p->Parent() ? p->Parent()->ToElement() : nullptr) {
+    if (std::string(p->Name()) == "Scene") break;
+    s = describe(p) + " > " + s;
+  }
+  return s;
+}
+
+std::string shorten(std::string v) {
+  if (v.size() > 40) v = v.substr(0, 37) + "...";
+  return v;
+}
+
+class Loader {
+ public:
+  explicit Loader(std::string file) : file_(std::move(file)) {}
+  SceneDesc load();
+
+ private:
+  [[noreturn]] void fail(const XMLElement* e, const std::string& what) const {
+    throw input_error(file_, e ? path_of(e) : std::string("Scene"), what);
+  }
+
+  std::vector<double> numbers(const XMLElement* e, size_t min_count, size_t max_count) const;
+  double number(const XMLElement* e) const { return numbers(e, 1, 1)[0]; }
+  Vec3d vec3(const XMLElement* e) const {
+    auto v = numbers(e, 3, 3);
+    return {v[0], v[1], v[2]};
+  }
+  const XMLElement* child(const XMLElement* e, const char* name, bool required) const;
+  double child_number(const XMLElement* e, const char* name, double fallback) const;
+  Vec3d child_vec3(const XMLElement* e, const char* name, Vec3d fallback) const;
+  Vec3d nonzero(const XMLElement* e, Vec3d v) const {
+    if (length(v) == 0) fail(e, "zero-length vector");
+    return v;
+  }
+
+  void read_cameras(const XMLElement* scene);
+  void read_lights(const XMLElement* scene);
+  void read_materials(const XMLElement* scene);
+  void read_transformations(const XMLElement* scene);
+  void read_vertices(const XMLElement* scene);
+  void read_objects(const XMLElement* scene);
+  int material_of(const XMLElement* e) const;
+  Mat4 transform_of(const XMLElement* e) const;
+  Vec3d motion_of(const XMLElement* e) const;
+  int vertex_index(const XMLElement* e, long one_based) const;
+  int add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth);
+  void warn(const XMLElement* e, const std::string& what) {
+    scene_.warnings.push_back(file_ + ": " + path_of(e) + ": " + what);
+  }
+
+  std::string file_;
+  SceneDesc scene_;
+  std::map<std::string, int> material_ids_;
+  std::map<std::string, Mat4> transforms_;  // Keyed "t1", "s2", "r3", "c4".
+  std::vector<Vec3d> vertices_;
+  std::map<std::string, int> mesh_objects_;      // Mesh id -> object index.
+  std::map<std::string, int> instance_objects_;  // MeshInstance id -> object index.
+};
+
+std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count,
+                                    size_t max_count) const {
+  const char* text = e->GetText();
+  std::vector<double> out;
+  const char* p = text ? text : "";
+  for (;;) {
+    while (*p && std::isspace(static_cast<unsigned char>(*p))) ++p;
+    if (!*p) break;
+    const char* start = p;
+    while (*p && !std::isspace(static_cast<unsigned char>(*p))) ++p;
+    std::string token(start, p);
+    char* end = nullptr;
+    errno = 0;
+    double v = std::strtod(token.c_str(), &end);
+    if (end != token.c_str() + token.size() || token.empty())
+      fail(e, "not a number: '" + shorten(token) + "'");
+    if (!std::isfinite(v) || errno == ERANGE) fail(e, "not a finite number: '" + shorten(token) + "'");
+    out.push_back(v);
+  }
+  if (out.size() < min_count || out.size() > max_count) {
+    std::ostringstream s;
+    s << "expected " << min_count;
+    if (max_count != min_count) s << (max_count == SIZE_MAX ? " or more" : " to " + std::to_string(max_count));
+    s << " numbers, got " << out.size() << " ('" << shorten(text ? text : "") << "')";
+    fail(e, s.str());
+  }
+  return out;
+}
+
+const XMLElement* Loader::child(const XMLElement* e, const char* name, bool required) const {
+  const XMLElement* c = e->FirstChildElement(name);
+  if (!c && required) fail(e, std::string("missing <") + name + ">");
+  return c;
+}
+
+double Loader::child_number(const XMLElement* e, const char* name, double fallback) const {
+  const XMLElement* c = child(e, name, false);
+  return c ? number(c) : fallback;
+}
+
+Vec3d Loader::child_vec3(const XMLElement* e, const char* name, Vec3d fallback) const {
+  const XMLElement* c = child(e, name, false);
+  return c ? vec3(c) : fallback;
+}
+
+void Loader::read_cameras(const XMLElement* scene) {
+  const XMLElement* cams = child(scene, "Cameras", false);
+  for (auto* c = cams ? cams->FirstChildElement("Camera") : nullptr; c;
+       c = c->NextSiblingElement("Camera")) {
+    CameraDesc cam;
+    cam.position = vec3(child(c, "Position", true));
+    cam.up = nonzero(child(c, "Up", true), vec3(child(c, "Up", true)));
+    cam.near_distance = number(child(c, "NearDistance", true));
+    if (!(cam.near_distance > 0)) fail(child(c, "NearDistance", true), "must be positive");
+    const char* type = c->Attribute("type");
+    if (type && std::string(type) == "lookAt") {
+      Vec3d target = vec3(child(c, "GazePoint", true));
+      cam.gaze = nonzero(child(c, "GazePoint", true), target - cam.position);
+      const XMLElement* fov = child(c, "FovY", true);
+      double fovy = number(fov);
+      if (!(fovy > 0 && fovy < 180)) fail(fov, "must lie in (0, 180) degrees");
+      cam.top = cam.near_distance * std::tan(fovy * M_PI / 360.0);
+      cam.bottom = -cam.top;
+    } else {
+      cam.gaze = nonzero(child(c, "Gaze", true), vec3(child(c, "Gaze", true)));
+      // Some course files carry a fifth number (the near distance again); it is ignored.
+      auto np = numbers(child(c, "NearPlane", true), 4, 5);
+      cam.left = np[0];
+      cam.right = np[1];
+      cam.bottom = np[2];
+      cam.top = np[3];
+    }
+    const XMLElement* res = child(c, "ImageResolution", true);
+    auto r = numbers(res, 2, 2);
+    if (r[0] < 1 || r[1] < 1 || r[0] > 32768 || r[1] > 32768 || r[0] != std::floor(r[0]) ||
+        r[1] != std::floor(r[1]))
+      fail(res, "width and height must be whole numbers in [1, 32768]");
+    cam.width = static_cast<int>(r[0]);
+    cam.height = static_cast<int>(r[1]);
+    if (type && std::string(type) == "lookAt") {
+      cam.right = cam.top * cam.width / cam.height;
+      cam.left = -cam.right;
+    }
+    if (cam.left == cam.right || cam.bottom == cam.top)
+      fail(child(c, "NearPlane", false) ? child(c, "NearPlane", false) : c, "empty image plane");
+    if (length(cross(cam.up, cam.gaze)) == 0) fail(c, "Up is parallel to the gaze");
+    const XMLElement* name = child(c, "ImageName", true);
+    std::string image = name->GetText() ? name->GetText() : "";
+    image.erase(0, image.find_first_not_of(" \t\r\n"));
+    image.erase(image.find_last_not_of(" \t\r\n") + 1);
+    if (image.empty()) fail(name, "empty image name");
+    cam.image_name = image;
+    if (const XMLElement* ns = child(c, "NumSamples", false)) {
+      double n = number(ns);
+      double root = std::round(std::sqrt(n));
+      if (n < 1 || n != std::floor(n) || n > 1e6) fail(ns, "must be a whole number in [1, 1e6]");
+      if (root * root != n)
+        fail(ns, "'" + std::to_string(static_cast<long>(n)) +
+                     "' is not a perfect square (jittered sampling needs n x n strata)");
+      cam.samples = static_cast<int>(n);
+    }
+    cam.aperture = child_number(c, "ApertureSize", 0);
+    if (cam.aperture < 0) fail(child(c, "ApertureSize", true), "must not be negative");
+    cam.focus_distance = child_number(c, "FocusDistance", 1);
+    if (cam.aperture > 0 && !(cam.focus_distance > 0))
+      fail(child(c, "FocusDistance", true), "must be positive");
+    scene_.cameras.push_back(cam);
+  }
+  if (scene_.cameras.empty()) fail(nullptr, "no <Camera>: nothing to render");
+}
+
+void Loader::read_lights(const XMLElement* scene) {
+  const XMLElement* lights = child(scene, "Lights", false);
+  if (!lights) return;
+  for (auto* l = lights->FirstChildElement(); l; l = l->NextSiblingElement()) {
+    std::string name = l->Name();
+    auto non_negative = [&](const XMLElement* e) {
+      Vec3d v = vec3(e);
+      if (v.x < 0 || v.y < 0 || v.z < 0) fail(e, "negative light value");
+      return v;
+    };
+    if (name == "AmbientLight") {
+      scene_.ambient = non_negative(l);
+    } else if (name == "PointLight") {
+      PointLight p{};
+      p.position = to_float3(vec3(child(l, "Position", true)));
+      p.intensity = to_float3(non_negative(child(l, "Intensity", true)));
+      scene_.point_lights.push_back(p);
+    } else if (name == "AreaLight") {
+      AreaLight a{};
+      Vec3d pos = vec3(child(l, "Position", true));
+      Vec3d e1, e2, radiance;
+      if (child(l, "EdgeVector1", false)) {
+        // The older dialect: a parallelogram with a corner at Position.
+        e1 = vec3(child(l, "EdgeVector1", true));
+        e2 = vec3(child(l, "EdgeVector2", true));
+        radiance = non_negative(child(l, "Intensity", true));
+      } else {
+        Vec3d n = normalize(nonzero(child(l, "Normal", true), vec3(child(l, "Normal", true))));
+        const XMLElement* size_e = child(l, "Size", true);
+        double size = number(size_e);
+        if (!(size > 0)) fail(size_e, "must be positive");
+        radiance = non_negative(child(l, "Radiance", true));
+        // Any orthonormal pair spanning the plane gives the same uniform square.
+        Vec3d helper = std::fabs(n.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+        Vec3d u = normalize(cross(n, helper)), v = cross(n, u);
+        e1 = u * size;
+        e2 = v * size;
+        pos = pos - e1 * 0.5 - e2 * 0.5;
+      }
+      Vec3d normal = cross(e1, e2);
+      if (length(normal) == 0) fail(l, "degenerate light: zero area");
+      a.corner = to_float3(pos);
+      a.edge1 = to_float3(e1);
+      a.edge2 = to_float3(e2);
+      a.normal = to_float3(normalize(normal));
+      a.radiance = to_float3(radiance);
+      a.area = static_cast<float>(length(normal));
+      scene_.area_lights.push_back(a);
+    } else {
+      warn(l, "unknown light type, ignored");
+    }
+  }
+}
+
+void Loader::read_materials(const XMLElement* scene) {
+  const XMLElement* mats = child(scene, "Materials", false);
+  // Files of 2017-2019 have no type attribute; they mark glass with <Transparency> and
+  // mirrors with MirrorReflectance alone. Later files ignore MirrorReflectance without
+  // type="mirror" (the course's hw1 car scene relies on that).
+  bool old_dialect = false;
+  for (auto* e = mats ? mats->FirstChildElement("Material") : nullptr; e;
+       e = e->NextSiblingElement("Material"))
+    old_dialect = old_dialect || e->FirstChildElement("Transparency");
+  for (auto* e = mats ? mats->FirstChildElement("Material") : nullptr; e;
+       e = e->NextSiblingElement("Material")) {
+    Material m{};
+    m.ambient = to_float3(child_vec3(e, "AmbientReflectance", {}));
+    m.diffuse = to_float3(child_vec3(e, "DiffuseReflectance", {}));
+    m.specular = to_float3(child_vec3(e, "SpecularReflectance", {}));
+    m.mirror = to_float3(child_vec3(e, "MirrorReflectance", {}));
+    m.absorption = to_float3(child_vec3(e, "AbsorptionCoefficient", {}));
+    m.phong_exponent = static_cast<float>(child_number(e, "PhongExponent", 1));
+    m.refraction_index = static_cast<float>(child_number(e, "RefractionIndex", 1));
+    m.absorption_index = static_cast<float>(child_number(e, "AbsorptionIndex", 0));
+    m.roughness = static_cast<float>(child_number(e, "Roughness", 0));
+    if (m.roughness < 0) fail(child(e, "Roughness", true), "must not be negative");
+    if (!(m.refraction_index > 0)) fail(child(e, "RefractionIndex", true), "must be positive");
+    std::string type = e->Attribute("type") ? e->Attribute("type") : "";
+    Vec3d transparency = child_vec3(e, "Transparency", {});
+    if (type == "mirror") {
+      m.type = RT_MATERIAL_MIRROR;
+    } else if (type == "conductor") {
+      m.type = RT_MATERIAL_CONDUCTOR;
+    } else if (type == "dielectric") {
+      m.type = RT_MATERIAL_DIELECTRIC;
+    } else if (old_dialect && type.empty() && length(transparency) > 0) {
+      m.type = RT_MATERIAL_DIELECTRIC;
+    } else if (old_dialect && type.empty() && (m.mirror.x > 0 || m.mirror.y > 0 || m.mirror.z > 0)) {
+      m.type = RT_MATERIAL_MIRROR;
+    } else if (!type.empty()) {
+      warn(e, "unknown material type '" + type + "', treated as plain");
+    }
+    const char* id = e->Attribute("id");
+    material_ids_[id ? id : std::to_string(scene_.materials.size() + 1)] =
+        static_cast<int>(scene_.materials.size());
+    scene_.materials.push_back(m);
+  }
+}
+
+void Loader::read_transformations(const XMLElement* scene) {
+  const XMLElement* ts = child(scene, "Transformations", false);
+  for (auto* e = ts ? ts->FirstChildElement() : nullptr; e; e = e->NextSiblingElement()) {
+    std::string name = e->Name();
+    const char* id = e->Attribute("id");
+    if (!id) fail(e, "missing id attribute");
+    if (name == "Translation") {
+      transforms_[std::string("t") + id] = Mat4::translation(vec3(e));
+    } else if (name == "Scaling") {
+      Vec3d s = vec3(e);
+      if (s.x == 0 || s.y == 0 || s.z == 0) fail(e, "zero scale makes the transform singular");
+      transforms_[std::string("s") + id] = Mat4::scaling(s);
+    } else if (name == "Rotation") {
+      auto v = numbers(e, 4, 4);
+      Vec3d axis{v[1], v[2], v[3]};
+      nonzero(e, axis);
+      transforms_[std::string("r") + id] = Mat4::rotation(v[0], axis);
+    } else if (name == "Composite") {
+      auto v = numbers(e, 16, 16);
+      Mat4 m;
+      for (int i = 0; i < 16; ++i) m.m[i] = v[i];
+      transforms_[std::string("c") + id] = m;
+    } else {
+      warn(e, "unknown transformation, ignored");
+    }
+  }
+}
+
+void Loader::read_vertices(const XMLElement* scene) {
+  const XMLElement* vd = child(scene, "VertexData", false);
+  if (!vd) return;
+  auto v = numbers(vd, 0, SIZE_MAX);
+  if (v.size() % 3 != 0) fail(vd, std::to_string(v.size()) + " numbers is not a multiple of 3");
+  for (size_t i = 0; i + 2 < v.size(); i += 3) vertices_.push_back({v[i], v[i + 1], v[i + 2]});
+}
+
+int Loader::material_of(const XMLElement* e) const {
+  const XMLElement* m = child(e, "Material", true);
+  std::string id = m->GetText() ? m->GetText() : "";
+  id.erase(0, id.find_first_not_of(" \t\r\n"));
+  id.erase(id.find_last_not_of(" \t\r\n") + 1);
+  auto it = material_ids_.find(id);
+  if (it == material_ids_.end()) fail(m, "no material with id '" + shorten(id) + "'");
+  return it->second;
+}
+
+Mat4 Loader::transform_of(const XMLElement* e) const {
+  Mat4 m;
+  const XMLElement* t = child(e, "Transformations", false);
+  if (!t || !t->GetText()) return m;
+  std::istringstream in(t->GetText());
+  std::string ref;
+  // Each listed transformation applies after the ones before it.
+  while (in >> ref) {
+    auto it = transforms_.find(ref);
+    if (it == transforms_.end()) fail(t, "no transformation '" + shorten(ref) + "'");
+    m = it->second * m;
+  }
+  bool ok;
+  m.affine_inverse(&ok);
+  if (!ok) fail(t, "the composed transformation is singular");
+  return m;
+}
+
+Vec3d Loader::motion_of(const XMLElement* e) const { return child_vec3(e, "MotionBlur", {}); }
+
+int Loader::vertex_index(const XMLElement* e, long one_based) const {
+  if (one_based < 1 || one_based > static_cast<long>(vertices_.size()))
+    fail(e, "vertex index " + std::to_string(one_based) + " out of range [1, " +
+                std::to_string(vertices_.size()) + "]");
+  return static_cast<int>(one_based - 1);
+}
+
+// Builds a mesh from inline indices into VertexData or from a PLY file. Degenerate
+// triangles (zero area) are dropped and counted.
+int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth) {
+  MeshDesc mesh;
+  mesh.element = describe(obj);
+  mesh.smooth = smooth;
+  if (const char* ply = faces->Attribute("plyFile")) {
+    std::filesystem::path p(ply);
+    if (p.is_relative()) p = std::filesystem::path(file_).parent_path() / p;
+    PlyMesh pm = read_ply(p.string());
+    for (auto& v : pm.positions) mesh.positions.push_back({v[0], v[1], v[2]});
+    mesh.triangles = pm.triangles;
+  } else {
+    auto idx = numbers(faces, 3, SIZE_MAX);
+    if (idx.size() % 3 != 0) fail(faces, std::to_string(idx.size()) + " indices is not a multiple of 3");
+    long offset = faces->IntAttribute("vertexOffset", 0);
+    // Only the vertices the mesh uses are copied, renumbered in order of first use.
+    std::map<int, int> remap;
+    for (size_t i = 0; i < idx.size(); i += 3) {
+      std::array<int, 3> tri;
+      for (int k = 0; k < 3; ++k) {
+        double d = idx[i + k];
+        if (d != std::floor(d)) fail(faces, "vertex index '" + std::to_string(d) + "' is not whole");
+        int g = vertex_index(faces, static_cast<long>(d) + offset);
+        auto [it, inserted] = remap.emplace(g, static_cast<int>(mesh.positions.size()));
+        if (inserted) mesh.positions.push_back(vertices_[g]);
+        tri[k] = it->second;
+      }
+      mesh.triangles.push_back(tri);
+    }
+  }
+  std::vector<std::array<int, 3>> kept;
+  for (auto& t : mesh.triangles) {
+    Vec3d a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    if (length(cross(b - a, c - a)) > 0)
+      kept.push_back(t);
+    else
+      ++scene_.degenerate_triangles;
+  }
+  mesh.triangles.swap(kept);
+  scene_.meshes.push_back(std::move(mesh));
+  return static_cast<int>(scene_.meshes.size()) - 1;
+}
+
+void Loader::read_objects(const XMLElement* scene) {
+  const XMLElement* objs = child(scene, "Objects", false);
+  for (auto* e = objs ? objs->FirstChildElement() : nullptr; e; e = e->NextSiblingElement()) {
+    std::string name = e->Name();
+    ObjectDesc o;
+    o.element = describe(e);
+    const char* id = e->Attribute("id");
+    std::string key = id ? id : "";
+    if (name == "Mesh" || name == "Triangle") {
+      o.material = material_of(e);
+      const char* mode = e->Attribute("shadingMode");
+      bool smooth = mode && std::string(mode) == "smooth";
+      o.mesh = add_mesh_from_faces(e, child(e, name == "Mesh" ? "Faces" : "Indices", true), smooth);
+      o.transform = transform_of(e);
+      o.motion = motion_of(e);
+      if (name == "Mesh") mesh_objects_[key] = static_cast<int>(scene_.objects.size());
+    } else if (name == "MeshInstance") {
+      const char* base_id = e->Attribute("baseMeshId");
+      if (!base_id) fail(e, "missing baseMeshId");
+      // Older files reuse mesh ids for instances; a Mesh with the id wins.
+      auto it = mesh_objects_.find(base_id);
+      if (it == mesh_objects_.end()) {
+        it = instance_objects_.find(base_id);
+        if (it == instance_objects_.end())
+          fail(e, std::string("baseMeshId '") + base_id + "' names no earlier Mesh or MeshInstance");
+      }
+      const ObjectDesc& base = scene_.objects[it->second];
+      o.mesh = base.mesh;
+      o.material = child(e, "Material", false) ? material_of(e) : base.material;
+      bool reset = e->BoolAttribute("resetTransform", false);
+      o.transform = reset ? transform_of(e) : transform_of(e) * base.transform;
+      o.motion = motion_of(e);
+      instance_objects_[key] = static_cast<int>(scene_.objects.size());
+    } else if (name == "Sphere") {
+      o.kind = ObjectDesc::kSphere;
+      o.material = material_of(e);
+      const XMLElement* c = child(e, "Center", true);
+      double ci = number(c);
+      if (ci != std::floor(ci)) fail(c, "vertex index is not whole");
+      Vec3d centre = vertices_[vertex_index(c, static_cast<long>(ci))];
+      const XMLElement* r = child(e, "Radius", true);
+      double radius = number(r);
+      if (!(radius > 0)) fail(r, "radius must be positive");
+      o.transform = transform_of(e) * Mat4::translation(centre) *
+                    Mat4::scaling({radius, radius, radius});
+      o.motion = motion_of(e);
+    } else {
+      warn(e, "unknown object type, ignored");
+      continue;
+    }
+    scene_.objects.push_back(o);
+  }
+}
+
+SceneDesc Loader::load() {
+  tinyxml2::XMLDocument doc;
+  tinyxml2::XMLError err = doc.LoadFile(file_.c_str());
+  if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND || err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
+    throw input_error(file_, "file", "cannot open");
+  if (err != tinyxml2::XML_SUCCESS)
+    throw input_error(file_, "XML", std::string("malformed at line ") + std::to_string(doc.ErrorLineNum()) +
+                                        ": " + doc.ErrorName());
+  const XMLElement* scene = doc.FirstChildElement("Scene");
+  if (!scene) throw input_error(file_, "XML", "no <Scene> root element");
+  scene_.file = file_;
+  static const std::set<std::string> known = {
+      "BackgroundColor", "ShadowRayEpsilon", "IntersectionTestEpsilon", "MaxRecursionDepth",
+      "Cameras", "Lights", "Materials", "Transformations", "VertexData", "TexCoordData",
+      "Textures", "Objects"};
+  for (auto* e = scene->FirstChildElement(); e; e = e->NextSiblingElement())
+    if (!known.count(e->Name())) warn(e, "unknown element, ignored");
+  scene_.background = child_vec3(scene, "BackgroundColor", {});
+  scene_.shadow_epsilon = child_number(scene, "ShadowRayEpsilon", 1e-3);
+  if (scene_.shadow_epsilon < 0) fail(child(scene, "ShadowRayEpsilon", true), "must not be negative");
+  scene_.intersection_epsilon = child_number(scene, "IntersectionTestEpsilon", 1e-6);
+  if (const XMLElement* d = child(scene, "MaxRecursionDepth", false)) {
+    double v = number(d);
+    if (v < 0 || v != std::floor(v) || v > RT_MAX_DEPTH)
+      fail(d, "'" + shorten(d->GetText()) + "' is not a whole number in [0, " +
+                  std::to_string(RT_MAX_DEPTH) + "]");
+    scene_.max_depth = static_cast<int>(v);
+  }
+  read_cameras(scene);
+  read_lights(scene);
+  read_materials(scene);
+  read_transformations(scene);
+  read_vertices(scene);
+  read_objects(scene);
+  if (scene_.degenerate_triangles > 0)
+    scene_.warnings.push_back(file_ + ": Objects: skipped " +
+                              std::to_string(scene_.degenerate_triangles) + " degenerate triangles");
+  return std::move(scene_);
+}
+
+}  // namespace
+
+SceneDesc load_scene(const std::string& path) { return Loader(path).load(); }
+
+}  // namespace rt

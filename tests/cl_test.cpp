@@ -1,0 +1,385 @@
+// OpenCL host tests: struct layouts on the device, kernel builds, agreement with the CPU
+// reference, the compiled-kernel cache and the no-device path of the raytracer binary.
+// Tests that need a device are skipped when none is usable.
+#define CL_HPP_ENABLE_EXCEPTIONS
+#include <CL/opencl.hpp>
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cl/features.h"
+#include "render.h"
+#include "render_cl.h"
+#include "scene.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kScenes = RT_SHARED_SCENES_DIR;
+
+// One renderer for the whole binary (building programs is the slow part); no disk cache
+// so each run exercises the compiler.
+rt::ClRenderer* shared_renderer(std::string* why) {
+  static std::string reason;
+  static std::unique_ptr<rt::ClRenderer> renderer = [] {
+    return rt::ClRenderer::create("", /*use_cache=*/false, &reason);
+  }();
+  *why = reason;
+  return renderer.get();
+}
+
+#define REQUIRE_DEVICE(r)                                       \
+  std::string why_;                                             \
+  rt::ClRenderer* r = shared_renderer(&why_);                   \
+  if (!r) GTEST_SKIP() << "no OpenCL device: " << why_
+
+fs::path make_temp_dir(const std::string& tag) {
+  std::string templ = (fs::temp_directory_path() / ("rt_cl_test_" + tag + "_XXXXXX")).string();
+  std::vector<char> buf(templ.begin(), templ.end());
+  buf.push_back('\0');
+  if (!mkdtemp(buf.data())) throw std::runtime_error("mkdtemp failed");
+  return fs::path(buf.data());
+}
+
+struct Loaded {
+  rt::SceneDesc scene;
+  rt::FlatScene flat;
+};
+
+Loaded load(const std::string& rel, int spp, int size) {
+  Loaded l;
+  l.scene = rt::load_scene(kScenes + rel);
+  rt::RenderOptions opt;
+  opt.spp = spp;
+  l.flat = rt::flatten_scene(l.scene, opt);
+  rt::set_camera(l.flat, l.scene, 0, opt);
+  // Fewer pixels over the same film: the pixel coordinates follow width and height.
+  l.flat.header.camera.width = size;
+  l.flat.header.camera.height = size;
+  return l;
+}
+
+rt::RenderResult render_on_cpu(const rt::FlatScene& flat) {
+  rt::Progress quiet(false, "", 0);
+  return rt::render_cpu(flat, 0, quiet);
+}
+
+rt::RenderResult render_on_cl(rt::ClRenderer* r, const rt::FlatScene& flat, bool generic,
+                              rt::ClTimings* t = nullptr) {
+  rt::Progress quiet(false, "", 0);
+  rt::ClTimings local;
+  return r->render(flat, generic, quiet, t ? t : &local);
+}
+
+bool same_bits(const float4& a, const float4& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Compares two renders: prints the share of bit-identical per-pixel sums and the largest
+// difference of the reconstructed colour, and checks it against the tolerance.
+void expect_agree(const std::string& label, const rt::RenderResult& cl,
+                  const rt::RenderResult& cpu) {
+  ASSERT_EQ(cl.width, cpu.width);
+  ASSERT_EQ(cl.height, cpu.height);
+  ASSERT_EQ(cl.accum.size(), cpu.accum.size());
+  size_t identical = 0, same_primary = 0;
+  for (size_t i = 0; i < cl.accum.size(); ++i) {
+    if (same_bits(cl.accum[i].sum, cpu.accum[i].sum)) ++identical;
+    if (cl.primary[i].instance == cpu.primary[i].instance &&
+        cl.primary[i].primitive == cpu.primary[i].primitive)
+      ++same_primary;
+  }
+  std::vector<float> a = cl.rgb(), b = cpu.rgb();
+  float max_value = 0, max_diff = 0;
+  size_t worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(a[i])) << label << ": component " << i;
+    max_value = std::max({max_value, std::fabs(a[i]), std::fabs(b[i])});
+    float d = std::fabs(a[i] - b[i]);
+    if (d > max_diff) {
+      max_diff = d;
+      worst = i / 3;
+    }
+  }
+  double n = static_cast<double>(cl.accum.size());
+  std::printf("[ %s ] %dx%d: %.2f%% of pixel sums bit-identical, %.2f%% same primary hit, "
+              "max |rgb difference| %.3g (max value %.3g, worst pixel %zu,%zu), rays %llu vs "
+              "%llu\n",
+              label.c_str(), cl.width, cl.height, 100.0 * identical / n, 100.0 * same_primary / n,
+              max_diff, max_value, worst % cl.width, worst / cl.width,
+              static_cast<unsigned long long>(cl.rays), static_cast<unsigned long long>(cpu.rays));
+  EXPECT_GT(max_value, 0.0f) << label << ": black image";
+  EXPECT_LE(max_diff, 1e-3f * max_value) << label;
+  EXPECT_GE(identical, cl.accum.size() / 2) << label << ": most pixels should be bit-identical";
+}
+
+bool identical(const rt::RenderResult& a, const rt::RenderResult& b) {
+  return a.accum.size() == b.accum.size() &&
+         std::memcmp(a.accum.data(), b.accum.data(), a.accum.size() * sizeof(PixelAccum)) == 0;
+}
+
+TEST(OpenCl, StructLayoutsMatchTheDevice) {
+  REQUIRE_DEVICE(r);
+  // Finds the renderer's device and builds the types with every feature compiled out.
+  cl::Device device;
+  bool found = false;
+  std::vector<cl::Platform> platforms;
+  cl::Platform::get(&platforms);
+  for (auto& p : platforms) {
+    std::vector<cl::Device> devs;
+    try {
+      p.getDevices(CL_DEVICE_TYPE_ALL, &devs);
+    } catch (const cl::Error&) {
+      continue;
+    }
+    for (auto& d : devs) {
+      std::string name = d.getInfo<CL_DEVICE_NAME>();
+      while (!name.empty() && (name.back() == '\0' || name.back() == ' ')) name.pop_back();
+      if (!found && name == r->device_name()) {
+        device = d;
+        found = true;
+      }
+    }
+  }
+  ASSERT_TRUE(found) << r->device_name();
+  cl::Context ctx(device);
+  cl::CommandQueue queue(ctx, device);
+  std::string src = std::string(rt::kKernelSource) + R"(
+__kernel void rt_test_sizes(__global int* out) {
+  out[0] = sizeof(SceneHeader); out[1] = sizeof(Material); out[2] = sizeof(Instance);
+  out[3] = sizeof(BvhNode); out[4] = sizeof(Triangle); out[5] = sizeof(TriangleNormals);
+  out[6] = sizeof(PointLight); out[7] = sizeof(AreaLight); out[8] = sizeof(PixelAccum);
+  out[9] = sizeof(PrimaryInfo); out[10] = sizeof(Camera); out[11] = sizeof(float3);
+})";
+  cl::Program program(ctx, src);
+  try {
+    program.build({device}, "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=0");
+  } catch (const cl::Error&) {
+    FAIL() << program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device);
+  }
+  cl::Kernel k(program, "rt_test_sizes");
+  cl::Buffer out(ctx, CL_MEM_WRITE_ONLY, 12 * sizeof(cl_int));
+  k.setArg(0, out);
+  queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1), cl::NullRange);
+  std::vector<cl_int> s(12);
+  queue.enqueueReadBuffer(out, CL_TRUE, 0, s.size() * sizeof(cl_int), s.data());
+  EXPECT_EQ(s[0], (int)sizeof(SceneHeader)) << "SceneHeader";
+  EXPECT_EQ(s[1], (int)sizeof(Material)) << "Material";
+  EXPECT_EQ(s[2], (int)sizeof(Instance)) << "Instance";
+  EXPECT_EQ(s[3], (int)sizeof(BvhNode)) << "BvhNode";
+  EXPECT_EQ(s[4], (int)sizeof(Triangle)) << "Triangle";
+  EXPECT_EQ(s[5], (int)sizeof(TriangleNormals)) << "TriangleNormals";
+  EXPECT_EQ(s[6], (int)sizeof(PointLight)) << "PointLight";
+  EXPECT_EQ(s[7], (int)sizeof(AreaLight)) << "AreaLight";
+  EXPECT_EQ(s[8], (int)sizeof(PixelAccum)) << "PixelAccum";
+  EXPECT_EQ(s[9], (int)sizeof(PrimaryInfo)) << "PrimaryInfo";
+  EXPECT_EQ(s[10], (int)sizeof(Camera)) << "Camera";
+  EXPECT_EQ(s[11], (int)sizeof(float3)) << "float3";
+}
+
+TEST(OpenCl, DeviceNameIsNotEmpty) {
+  REQUIRE_DEVICE(r);
+  EXPECT_FALSE(r->device_name().empty());
+}
+
+TEST(OpenCl, BadSelectorsReturnNullWithAReason) {
+  std::string why;
+  EXPECT_EQ(rt::ClRenderer::create("no-such-device-name-xyz", false, &why), nullptr);
+  EXPECT_FALSE(why.empty());
+  EXPECT_EQ(why.find('\n'), std::string::npos);
+  why.clear();
+  EXPECT_EQ(rt::ClRenderer::create("999", false, &why), nullptr);
+  EXPECT_FALSE(why.empty());
+}
+
+// Specialized kernels for several feature sets and the generic one all build, and a bit
+// the scene does not need never changes the image.
+TEST(OpenCl, KernelBuildsSpecializedAndGeneric) {
+  REQUIRE_DEVICE(r);
+  Loaded l = load("/hw1/simple.xml", 1, 24);
+  rt::ClTimings t;
+  rt::RenderResult base = render_on_cl(r, l.flat, false, &t);
+  EXPECT_NE(t.options.find("-DRT_KERNEL_FEATURES=" + std::to_string(l.flat.header.features)),
+            std::string::npos)
+      << t.options;
+  EXPECT_EQ(t.options.find("fast-relaxed"), std::string::npos);
+  EXPECT_EQ(t.options.find("mad-enable"), std::string::npos);
+  std::printf("[ specialized 0x%x ] compile %.0f ms\n", l.flat.header.features, t.compile_ms);
+
+  for (int extra : {RT_FEATURE_MIRROR | RT_FEATURE_DIELECTRIC | RT_FEATURE_MULTISAMPLE,
+                    RT_FEATURE_SMOOTH | RT_FEATURE_AREA_LIGHTS | RT_FEATURE_MOTION_BLUR |
+                        RT_FEATURE_DEPTH_OF_FIELD | RT_FEATURE_CONDUCTOR |
+                        RT_FEATURE_ROUGHNESS}) {
+    rt::FlatScene f = l.flat;
+    f.header.features |= extra;
+    rt::ClTimings te;
+    rt::RenderResult res = render_on_cl(r, f, false, &te);
+    std::printf("[ specialized 0x%x ] compile %.0f ms\n", f.header.features, te.compile_ms);
+    EXPECT_TRUE(identical(res, base)) << "features 0x" << std::hex << f.header.features;
+  }
+  rt::ClTimings tg;
+  rt::RenderResult generic = render_on_cl(r, l.flat, true, &tg);
+  std::printf("[ generic ] compile %.0f ms\n", tg.compile_ms);
+  EXPECT_NE(tg.options.find("-DRT_KERNEL_FEATURES=" + std::to_string(RT_FEATURE_ALL)),
+            std::string::npos)
+      << tg.options;
+  EXPECT_TRUE(identical(generic, base));
+  // The second use of a program comes from memory.
+  rt::ClTimings again;
+  render_on_cl(r, l.flat, true, &again);
+  EXPECT_TRUE(again.cache_hit);
+}
+
+TEST(OpenCl, MatchesCpuOnSimple) {
+  REQUIRE_DEVICE(r);
+  Loaded l = load("/hw1/simple.xml", 0, 96);
+  expect_agree("hw1/simple", render_on_cl(r, l.flat, false), render_on_cpu(l.flat));
+}
+
+TEST(OpenCl, MatchesCpuOnTransformedSpheres) {
+  REQUIRE_DEVICE(r);
+  Loaded l = load("/hw2/spheres.xml", 0, 96);
+  ASSERT_TRUE(l.flat.header.features & RT_FEATURE_TRANSFORMS);
+  expect_agree("hw2/spheres", render_on_cl(r, l.flat, false), render_on_cpu(l.flat));
+}
+
+TEST(OpenCl, MatchesCpuOnAreaLightsWithSampling) {
+  REQUIRE_DEVICE(r);
+  Loaded l = load("/hw3/cornellbox_area.xml", 4, 64);
+  ASSERT_TRUE(l.flat.header.features & RT_FEATURE_AREA_LIGHTS);
+  rt::RenderResult cl = render_on_cl(r, l.flat, false);
+  EXPECT_EQ(cl.samples, 64u * 64u * 4u);
+  expect_agree("hw3/cornellbox_area 4 spp", cl, render_on_cpu(l.flat));
+}
+
+// Odd sizes: the global size is rounded up to the work-group size, and the kernel must
+// skip the extra work-items.
+TEST(OpenCl, OddImageSize) {
+  REQUIRE_DEVICE(r);
+  Loaded l = load("/hw1/simple.xml", 0, 37);
+  l.flat.header.camera.height = 13;
+  expect_agree("hw1/simple 37x13", render_on_cl(r, l.flat, false), render_on_cpu(l.flat));
+}
+
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+    const char* old = std::getenv(name);
+    had_ = old != nullptr;
+    if (had_) old_ = old;
+    setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnv() {
+    if (had_)
+      setenv(name_, old_.c_str(), 1);
+    else
+      unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  bool had_;
+  std::string old_;
+};
+
+TEST(OpenCl, CompiledKernelCache) {
+  REQUIRE_DEVICE(r);
+  fs::path dir = make_temp_dir("cache");
+  ScopedEnv env("XDG_CACHE_HOME", dir.string());
+  Loaded l = load("/hw1/simple.xml", 0, 32);
+  std::string why;
+  rt::RenderResult first, second;
+  {
+    auto a = rt::ClRenderer::create("", true, &why);
+    ASSERT_NE(a, nullptr) << why;
+    rt::ClTimings t;
+    first = render_on_cl(a.get(), l.flat, false, &t);
+    EXPECT_FALSE(t.cache_hit);
+    std::printf("[ cache ] cold compile %.0f ms\n", t.compile_ms);
+  }
+  size_t files = 0;
+  for (auto& e : fs::directory_iterator(dir / "raytracer" / "kernels")) {
+    EXPECT_EQ(e.path().extension(), ".bin") << e.path();
+    ++files;
+  }
+  EXPECT_EQ(files, 1u);
+  {
+    auto b = rt::ClRenderer::create("", true, &why);
+    ASSERT_NE(b, nullptr) << why;
+    rt::ClTimings t;
+    second = render_on_cl(b.get(), l.flat, false, &t);
+    EXPECT_TRUE(t.cache_hit);
+    std::printf("[ cache ] cached load %.0f ms\n", t.compile_ms);
+  }
+  EXPECT_TRUE(identical(first, second));
+  // A corrupt cache file falls back to a build from source.
+  for (auto& e : fs::directory_iterator(dir / "raytracer" / "kernels"))
+    std::ofstream(e.path(), std::ios::binary | std::ios::trunc) << "not a binary";
+  {
+    auto c = rt::ClRenderer::create("", true, &why);
+    ASSERT_NE(c, nullptr) << why;
+    rt::ClTimings t;
+    rt::RenderResult third = render_on_cl(c.get(), l.flat, false, &t);
+    EXPECT_FALSE(t.cache_hit);
+    EXPECT_TRUE(identical(first, third));
+  }
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
+
+// Runs a shell command; returns its exit status (or -1).
+int run(const std::string& cmd) {
+  int status = std::system(cmd.c_str());
+  if (status == -1 || !WIFEXITED(status)) return -1;
+  return WEXITSTATUS(status);
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(OpenCl, NoPlatformPath) {
+  fs::path dir = make_temp_dir("noicd");
+  fs::path vendors = dir / "vendors", out = dir / "out";
+  fs::create_directories(vendors);
+  fs::create_directories(out);
+  std::string scene = kScenes + "/hw1/simple.xml";
+  std::string base = "OCL_ICD_VENDORS='" + vendors.string() + "' '" RT_RAYTRACER_EXE "' '" +
+                     scene + "' --output-dir '" + out.string() + "' ";
+  fs::path err = dir / "err.txt";
+
+  int rc = run(base + "--device cl >/dev/null 2>'" + err.string() + "'");
+  std::string e = slurp(err);
+  EXPECT_NE(rc, 0);
+  EXPECT_NE(e.find("OpenCL"), std::string::npos) << e;
+  EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 1) << e;
+  EXPECT_FALSE(fs::exists(out / "simple.png"));
+
+  rc = run(base + "--device auto >/dev/null 2>'" + err.string() + "'");
+  e = slurp(err);
+  EXPECT_EQ(rc, 0) << e;
+  EXPECT_NE(e.find("CPU reference"), std::string::npos) << e;
+  EXPECT_TRUE(fs::exists(out / "simple.png"));
+
+  rc = run("OCL_ICD_VENDORS='" + vendors.string() + "' '" RT_RAYTRACER_EXE
+           "' --list-devices >'" + err.string() + "' 2>&1");
+  EXPECT_NE(rc, 0);
+  EXPECT_NE(slurp(err).find("no OpenCL platform"), std::string::npos) << slurp(err);
+
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
+
+}  // namespace
