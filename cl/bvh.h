@@ -22,8 +22,8 @@ RT_DEVICE float IntersectBox(RT_GLOBAL const BvhNode* node, float3 o, float3 inv
   float tx0 = (node->lo[0] - o.x) * inv_d.x, tx1 = (node->hi[0] - o.x) * inv_d.x;
   float ty0 = (node->lo[1] - o.y) * inv_d.y, ty1 = (node->hi[1] - o.y) * inv_d.y;
   float tz0 = (node->lo[2] - o.z) * inv_d.z, tz1 = (node->hi[2] - o.z) * inv_d.z;
-  float tnear = fmax(fmax(fmin(tx0, tx1), fmin(ty0, ty1)), fmax(fmin(tz0, tz1), 0.0f));
-  float tfar = fmin(fmin(fmax(tx0, tx1), fmax(ty0, ty1)), fmin(fmax(tz0, tz1), tmax));
+  float tnear = MaxF(MaxF(MinF(tx0, tx1), MinF(ty0, ty1)), MaxF(MinF(tz0, tz1), 0.0f));
+  float tfar = MinF(MinF(MaxF(tx0, tx1), MaxF(ty0, ty1)), MinF(MaxF(tz0, tz1), tmax));
   tfar *= 1.0000004f;
   return tnear <= tfar ? tnear : RT_INFINITY;
 }

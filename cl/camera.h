@@ -49,10 +49,6 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, float px, float 
     ray.origin = origin;
     ray.direction = Normalize(focus - origin);
   }
-  // Camera rays start on the image plane: geometry nearer than NearDistance is clipped,
-  // which the course's files rely on (cornellbox_boxes_dynamic puts its camera behind a
-  // wall and its image plane just inside the box).
-  ray.origin = ray.origin + ray.direction * (cam->near_distance / Dot(ray.direction, -cam->w));
   return ray;
 }
 

@@ -77,7 +77,7 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
     Ray ray = task.ray;
     Hit hit;
     *rays += 1u;
-    int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && !task.inside;
+    int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && task.depth == 0;
     if (!IntersectScene(sd, ray, 0, cull, &hit)) {
       if (task.depth == 0 || (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0)
         radiance += task.weight * h->background;

@@ -278,7 +278,7 @@ class ClRendererImpl final : public ClRenderer {
 
   std::string build_options(int features) const {
     std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
-    (void)0;
+    if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
     return o;
   }
   Built& program_for(const std::string& options, ClTimings* timings);
