@@ -4,7 +4,9 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -25,6 +27,15 @@ std::string describe(const XMLElement* e) {
   return s;
 }
 
+// All the element's text, also where comments split it (<Gaze>0 0 <!-- z --> -1</Gaze>);
+// GetText() would return only the first piece.
+std::string text_of(const XMLElement* e) {
+  std::string s;
+  for (auto* n = e->FirstChild(); n; n = n->NextSibling())
+    if (const auto* t = n->ToText()) s += t->Value();
+  return s;
+}
+
 std::string path_of(const XMLElement* e) {
   std::string s = describe(e);
   for (auto* p = e->Parent() ? e->Parent()->ToElement() : nullptr; p;
@@ -35,9 +46,30 @@ std::string path_of(const XMLElement* e) {
   return s;
 }
 
-std::string shorten(std::string v) {
+// Makes text from the file fit a one-line message: whitespace runs (newlines included)
+// become one space, control characters '?', and long values are cut.
+std::string shorten(const std::string& in) {
+  std::string v;
+  for (char ch : in) {
+    unsigned char c = static_cast<unsigned char>(ch);
+    if (std::isspace(c)) {
+      if (!v.empty() && v.back() != ' ') v += ' ';
+    } else {
+      v += c < 32 || c == 127 ? '?' : ch;
+    }
+  }
+  if (!v.empty() && v.back() == ' ') v.pop_back();
   if (v.size() > 40) v = v.substr(0, 37) + "...";
   return v;
+}
+
+std::string shorten(const char* v) { return shorten(std::string(v ? v : "")); }
+
+// A number as the file would write it: 3, -1.5, 1e+30.
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
 }
 
 class Loader {
@@ -49,6 +81,10 @@ class Loader {
   [[noreturn]] void fail(const XMLElement* e, const std::string& what) const {
     throw input_error(file_, e ? path_of(e) : std::string("Scene"), what);
   }
+  // Quotes the element's text before `what`: "Radius: '-1' must be positive".
+  [[noreturn]] void fail_value(const XMLElement* e, const std::string& what) const {
+    fail(e, "'" + shorten(text_of(e)) + "' " + what);
+  }
 
   std::vector<double> numbers(const XMLElement* e, size_t min_count, size_t max_count) const;
   double number(const XMLElement* e) const { return numbers(e, 1, 1)[0]; }
@@ -59,8 +95,8 @@ class Loader {
   const XMLElement* child(const XMLElement* e, const char* name, bool required) const;
   double child_number(const XMLElement* e, const char* name, double fallback) const;
   Vec3d child_vec3(const XMLElement* e, const char* name, Vec3d fallback) const;
-  Vec3d nonzero(const XMLElement* e, Vec3d v) const {
-    if (length(v) == 0) fail(e, "zero-length vector");
+  Vec3d nonzero(const XMLElement* e, Vec3d v, const char* what = "is a zero-length vector") const {
+    if (length(v) == 0) fail_value(e, what);
     return v;
   }
 
@@ -73,7 +109,7 @@ class Loader {
   int material_of(const XMLElement* e) const;
   Mat4 transform_of(const XMLElement* e) const;
   Vec3d motion_of(const XMLElement* e) const;
-  int vertex_index(const XMLElement* e, long one_based) const;
+  int vertex_index(const XMLElement* e, double one_based, long offset = 0) const;
   int add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth);
   void warn(const XMLElement* e, const std::string& what) {
     scene_.warnings.push_back(file_ + ": " + path_of(e) + ": " + what);
@@ -90,9 +126,9 @@ class Loader {
 
 std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count,
                                     size_t max_count) const {
-  const char* text = e->GetText();
+  const std::string text = text_of(e);
   std::vector<double> out;
-  const char* p = text ? text : "";
+  const char* p = text.c_str();
   for (;;) {
     while (*p && std::isspace(static_cast<unsigned char>(*p))) ++p;
     if (!*p) break;
@@ -104,14 +140,16 @@ std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count,
     double v = std::strtod(token.c_str(), &end);
     if (end != token.c_str() + token.size() || token.empty())
       fail(e, "not a number: '" + shorten(token) + "'");
-    if (!std::isfinite(v) || errno == ERANGE) fail(e, "not a finite number: '" + shorten(token) + "'");
+    // Overflow gives inf; underflow (1e-400) is a representable tiny value, not an error.
+    if (!std::isfinite(v)) fail(e, "not a finite number: '" + shorten(token) + "'");
     out.push_back(v);
   }
   if (out.size() < min_count || out.size() > max_count) {
     std::ostringstream s;
     s << "expected " << min_count;
     if (max_count != min_count) s << (max_count == SIZE_MAX ? " or more" : " to " + std::to_string(max_count));
-    s << " numbers, got " << out.size() << " ('" << shorten(text ? text : "") << "')";
+    s << (max_count == 1 ? " number" : " numbers") << ", got " << out.size() << " ('"
+      << shorten(text) << "')";
     fail(e, s.str());
   }
   return out;
@@ -139,16 +177,18 @@ void Loader::read_cameras(const XMLElement* scene) {
        c = c->NextSiblingElement("Camera")) {
     CameraDesc cam;
     cam.position = vec3(child(c, "Position", true));
-    cam.up = nonzero(child(c, "Up", true), vec3(child(c, "Up", true)));
+    const XMLElement* up = child(c, "Up", true);
+    cam.up = nonzero(up, vec3(up));
     cam.near_distance = number(child(c, "NearDistance", true));
-    if (!(cam.near_distance > 0)) fail(child(c, "NearDistance", true), "must be positive");
+    if (!(cam.near_distance > 0)) fail_value(child(c, "NearDistance", true), "must be positive");
     const char* type = c->Attribute("type");
     if (type && std::string(type) == "lookAt") {
       Vec3d target = vec3(child(c, "GazePoint", true));
-      cam.gaze = nonzero(child(c, "GazePoint", true), target - cam.position);
+      cam.gaze = nonzero(child(c, "GazePoint", true), target - cam.position,
+                         "equals the camera Position: no gaze direction");
       const XMLElement* fov = child(c, "FovY", true);
       double fovy = number(fov);
-      if (!(fovy > 0 && fovy < 180)) fail(fov, "must lie in (0, 180) degrees");
+      if (!(fovy > 0 && fovy < 180)) fail_value(fov, "must lie in (0, 180) degrees");
       cam.top = cam.near_distance * std::tan(fovy * M_PI / 360.0);
       cam.bottom = -cam.top;
     } else {
@@ -164,18 +204,20 @@ void Loader::read_cameras(const XMLElement* scene) {
     auto r = numbers(res, 2, 2);
     if (r[0] < 1 || r[1] < 1 || r[0] > 32768 || r[1] > 32768 || r[0] != std::floor(r[0]) ||
         r[1] != std::floor(r[1]))
-      fail(res, "width and height must be whole numbers in [1, 32768]");
+      fail_value(res, "width and height must be whole numbers in [1, 32768]");
     cam.width = static_cast<int>(r[0]);
     cam.height = static_cast<int>(r[1]);
     if (type && std::string(type) == "lookAt") {
       cam.right = cam.top * cam.width / cam.height;
       cam.left = -cam.right;
     }
-    if (cam.left == cam.right || cam.bottom == cam.top)
-      fail(child(c, "NearPlane", false) ? child(c, "NearPlane", false) : c, "empty image plane");
-    if (length(cross(cam.up, cam.gaze)) == 0) fail(c, "Up is parallel to the gaze");
+    if (cam.left == cam.right || cam.bottom == cam.top) {
+      if (const XMLElement* np = child(c, "NearPlane", false)) fail_value(np, "is an empty image plane");
+      fail(c, "empty image plane");
+    }
+    if (length(cross(cam.up, cam.gaze)) == 0) fail_value(up, "is parallel to the gaze direction");
     const XMLElement* name = child(c, "ImageName", true);
-    std::string image = name->GetText() ? name->GetText() : "";
+    std::string image = text_of(name);
     image.erase(0, image.find_first_not_of(" \t\r\n"));
     image.erase(image.find_last_not_of(" \t\r\n") + 1);
     if (image.empty()) fail(name, "empty image name");
@@ -183,17 +225,17 @@ void Loader::read_cameras(const XMLElement* scene) {
     if (const XMLElement* ns = child(c, "NumSamples", false)) {
       double n = number(ns);
       double root = std::round(std::sqrt(n));
-      if (n < 1 || n != std::floor(n) || n > 1e6) fail(ns, "must be a whole number in [1, 1e6]");
+      if (n < 1 || n != std::floor(n) || n > 1e6) fail_value(ns, "must be a whole number in [1, 1e6]");
       if (root * root != n)
         fail(ns, "'" + std::to_string(static_cast<long>(n)) +
                      "' is not a perfect square (jittered sampling needs n x n strata)");
       cam.samples = static_cast<int>(n);
     }
     cam.aperture = child_number(c, "ApertureSize", 0);
-    if (cam.aperture < 0) fail(child(c, "ApertureSize", true), "must not be negative");
+    if (cam.aperture < 0) fail_value(child(c, "ApertureSize", true), "must not be negative");
     cam.focus_distance = child_number(c, "FocusDistance", 1);
     if (cam.aperture > 0 && !(cam.focus_distance > 0))
-      fail(child(c, "FocusDistance", true), "must be positive");
+      fail_value(child(c, "FocusDistance", true), "must be positive");
     scene_.cameras.push_back(cam);
   }
   if (scene_.cameras.empty()) fail(nullptr, "no <Camera>: nothing to render");
@@ -206,7 +248,7 @@ void Loader::read_lights(const XMLElement* scene) {
     std::string name = l->Name();
     auto non_negative = [&](const XMLElement* e) {
       Vec3d v = vec3(e);
-      if (v.x < 0 || v.y < 0 || v.z < 0) fail(e, "negative light value");
+      if (v.x < 0 || v.y < 0 || v.z < 0) fail_value(e, "is negative (light values must be >= 0)");
       return v;
     };
     if (name == "AmbientLight") {
@@ -229,7 +271,7 @@ void Loader::read_lights(const XMLElement* scene) {
         Vec3d n = normalize(nonzero(child(l, "Normal", true), vec3(child(l, "Normal", true))));
         const XMLElement* size_e = child(l, "Size", true);
         double size = number(size_e);
-        if (!(size > 0)) fail(size_e, "must be positive");
+        if (!(size > 0)) fail_value(size_e, "must be positive");
         radiance = non_negative(child(l, "Radiance", true));
         // Any orthonormal pair spanning the plane gives the same uniform square.
         Vec3d helper = std::fabs(n.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
@@ -274,8 +316,8 @@ void Loader::read_materials(const XMLElement* scene) {
     m.refraction_index = static_cast<float>(child_number(e, "RefractionIndex", 1));
     m.absorption_index = static_cast<float>(child_number(e, "AbsorptionIndex", 0));
     m.roughness = static_cast<float>(child_number(e, "Roughness", 0));
-    if (m.roughness < 0) fail(child(e, "Roughness", true), "must not be negative");
-    if (!(m.refraction_index > 0)) fail(child(e, "RefractionIndex", true), "must be positive");
+    if (m.roughness < 0) fail_value(child(e, "Roughness", true), "must not be negative");
+    if (!(m.refraction_index > 0)) fail_value(child(e, "RefractionIndex", true), "must be positive");
     std::string type = e->Attribute("type") ? e->Attribute("type") : "";
     Vec3d transparency = child_vec3(e, "Transparency", {});
     if (type == "mirror") {
@@ -308,17 +350,21 @@ void Loader::read_transformations(const XMLElement* scene) {
       transforms_[std::string("t") + id] = Mat4::translation(vec3(e));
     } else if (name == "Scaling") {
       Vec3d s = vec3(e);
-      if (s.x == 0 || s.y == 0 || s.z == 0) fail(e, "zero scale makes the transform singular");
+      if (s.x == 0 || s.y == 0 || s.z == 0) fail_value(e, "has a zero scale: the transform is singular");
       transforms_[std::string("s") + id] = Mat4::scaling(s);
     } else if (name == "Rotation") {
       auto v = numbers(e, 4, 4);
       Vec3d axis{v[1], v[2], v[3]};
-      nonzero(e, axis);
+      nonzero(e, axis, "has a zero-length rotation axis");
       transforms_[std::string("r") + id] = Mat4::rotation(v[0], axis);
     } else if (name == "Composite") {
       auto v = numbers(e, 16, 16);
       Mat4 m;
       for (int i = 0; i < 16; ++i) m.m[i] = v[i];
+      // Only affine matrices are supported: a projective last row would be silently dropped.
+      if (v[12] != 0 || v[13] != 0 || v[14] != 0 || v[15] != 1)
+        fail(e, "last row '" + fmt(v[12]) + " " + fmt(v[13]) + " " + fmt(v[14]) + " " + fmt(v[15]) +
+                    "' must be 0 0 0 1 (only affine transformations are supported)");
       transforms_[std::string("c") + id] = m;
     } else {
       warn(e, "unknown transformation, ignored");
@@ -336,7 +382,7 @@ void Loader::read_vertices(const XMLElement* scene) {
 
 int Loader::material_of(const XMLElement* e) const {
   const XMLElement* m = child(e, "Material", true);
-  std::string id = m->GetText() ? m->GetText() : "";
+  std::string id = text_of(m);
   id.erase(0, id.find_first_not_of(" \t\r\n"));
   id.erase(id.find_last_not_of(" \t\r\n") + 1);
   auto it = material_ids_.find(id);
@@ -347,8 +393,8 @@ int Loader::material_of(const XMLElement* e) const {
 Mat4 Loader::transform_of(const XMLElement* e) const {
   Mat4 m;
   const XMLElement* t = child(e, "Transformations", false);
-  if (!t || !t->GetText()) return m;
-  std::istringstream in(t->GetText());
+  if (!t) return m;
+  std::istringstream in(text_of(t));
   std::string ref;
   // Each listed transformation applies after the ones before it.
   while (in >> ref) {
@@ -358,17 +404,22 @@ Mat4 Loader::transform_of(const XMLElement* e) const {
   }
   bool ok;
   m.affine_inverse(&ok);
-  if (!ok) fail(t, "the composed transformation is singular");
+  if (!ok) fail_value(t, "composes to a singular transformation");
   return m;
 }
 
 Vec3d Loader::motion_of(const XMLElement* e) const { return child_vec3(e, "MotionBlur", {}); }
 
-int Loader::vertex_index(const XMLElement* e, long one_based) const {
-  if (one_based < 1 || one_based > static_cast<long>(vertices_.size()))
-    fail(e, "vertex index " + std::to_string(one_based) + " out of range [1, " +
-                std::to_string(vertices_.size()) + "]");
-  return static_cast<int>(one_based - 1);
+// Checks in double before any conversion, so 1e30 or -1e300 cannot overflow a long.
+int Loader::vertex_index(const XMLElement* e, double one_based, long offset) const {
+  if (one_based != std::floor(one_based))
+    fail(e, "vertex index '" + fmt(one_based) + "' is not a whole number");
+  double g = one_based + static_cast<double>(offset);
+  if (!(g >= 1 && g <= static_cast<double>(vertices_.size())))
+    fail(e, "vertex index " + fmt(one_based) +
+                (offset ? " + vertexOffset " + std::to_string(offset) + " = " + fmt(g) : "") +
+                " out of range [1, " + std::to_string(vertices_.size()) + "]");
+  return static_cast<int>(g) - 1;
 }
 
 // Builds a mesh from inline indices into VertexData or from a PLY file. Degenerate
@@ -380,21 +431,29 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
   if (const char* ply = faces->Attribute("plyFile")) {
     std::filesystem::path p(ply);
     if (p.is_relative()) p = std::filesystem::path(file_).parent_path() / p;
-    PlyMesh pm = read_ply(p.string());
+    PlyMesh pm;
+    try {
+      pm = read_ply(p.string());
+    } catch (const InputError& err) {
+      // The PLY reader names the PLY file; add the scene file and the element.
+      fail(faces, "plyFile '" + shorten(ply) + "': " + err.what());
+    }
     for (auto& v : pm.positions) mesh.positions.push_back({v[0], v[1], v[2]});
     mesh.triangles = pm.triangles;
   } else {
     auto idx = numbers(faces, 3, SIZE_MAX);
     if (idx.size() % 3 != 0) fail(faces, std::to_string(idx.size()) + " indices is not a multiple of 3");
-    long offset = faces->IntAttribute("vertexOffset", 0);
+    int offset = 0;
+    if (faces->Attribute("vertexOffset") &&
+        faces->QueryIntAttribute("vertexOffset", &offset) != tinyxml2::XML_SUCCESS)
+      fail(faces, "vertexOffset '" + shorten(faces->Attribute("vertexOffset")) +
+                      "' is not a whole number");
     // Only the vertices the mesh uses are copied, renumbered in order of first use.
     std::map<int, int> remap;
     for (size_t i = 0; i < idx.size(); i += 3) {
       std::array<int, 3> tri;
       for (int k = 0; k < 3; ++k) {
-        double d = idx[i + k];
-        if (d != std::floor(d)) fail(faces, "vertex index '" + std::to_string(d) + "' is not whole");
-        int g = vertex_index(faces, static_cast<long>(d) + offset);
+        int g = vertex_index(faces, idx[i + k], offset);
         auto [it, inserted] = remap.emplace(g, static_cast<int>(mesh.positions.size()));
         if (inserted) mesh.positions.push_back(vertices_[g]);
         tri[k] = it->second;
@@ -444,7 +503,11 @@ void Loader::read_objects(const XMLElement* scene) {
       const ObjectDesc& base = scene_.objects[it->second];
       o.mesh = base.mesh;
       o.material = child(e, "Material", false) ? material_of(e) : base.material;
-      bool reset = e->BoolAttribute("resetTransform", false);
+      bool reset = false;
+      if (e->Attribute("resetTransform") &&
+          e->QueryBoolAttribute("resetTransform", &reset) != tinyxml2::XML_SUCCESS)
+        fail(e, "resetTransform '" + shorten(e->Attribute("resetTransform")) +
+                    "' is not true or false");
       o.transform = reset ? transform_of(e) : transform_of(e) * base.transform;
       o.motion = motion_of(e);
       instance_objects_[key] = static_cast<int>(scene_.objects.size());
@@ -452,12 +515,10 @@ void Loader::read_objects(const XMLElement* scene) {
       o.kind = ObjectDesc::kSphere;
       o.material = material_of(e);
       const XMLElement* c = child(e, "Center", true);
-      double ci = number(c);
-      if (ci != std::floor(ci)) fail(c, "vertex index is not whole");
-      Vec3d centre = vertices_[vertex_index(c, static_cast<long>(ci))];
+      Vec3d centre = vertices_[vertex_index(c, number(c))];
       const XMLElement* r = child(e, "Radius", true);
       double radius = number(r);
-      if (!(radius > 0)) fail(r, "radius must be positive");
+      if (!(radius > 0)) fail_value(r, "must be positive");
       o.transform = transform_of(e) * Mat4::translation(centre) *
                     Mat4::scaling({radius, radius, radius});
       o.motion = motion_of(e);
@@ -471,12 +532,28 @@ void Loader::read_objects(const XMLElement* scene) {
 
 SceneDesc Loader::load() {
   tinyxml2::XMLDocument doc;
+  errno = 0;
   tinyxml2::XMLError err = doc.LoadFile(file_.c_str());
+  const int open_errno = errno;
   if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND || err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
-    throw input_error(file_, "file", "cannot open");
-  if (err != tinyxml2::XML_SUCCESS)
+    throw input_error(file_, "file",
+                      std::string("cannot open") + (open_errno ? std::string(": ") + std::strerror(open_errno) : ""));
+  // A directory opens but cannot be read; tinyxml2 would call either "malformed at line 0".
+  std::error_code ec;
+  if (err == tinyxml2::XML_ERROR_FILE_READ_ERROR || std::filesystem::is_directory(file_, ec))
+    throw input_error(file_, "file",
+                      std::filesystem::is_directory(file_, ec) ? "is a directory, not a scene file"
+                                                               : "cannot read");
+  if (err == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)
+    throw input_error(file_, "XML", "empty document: no <Scene> element");
+  if (err != tinyxml2::XML_SUCCESS) {
+    // ErrorStr() ends in ": XMLElement name=ImageName" when it knows the element.
+    std::string detail = doc.ErrorStr() ? doc.ErrorStr() : "", where;
+    size_t at = detail.find("XMLElement name=");
+    if (at != std::string::npos) where = " in <" + shorten(detail.substr(at + 16)) + ">";
     throw input_error(file_, "XML", std::string("malformed at line ") + std::to_string(doc.ErrorLineNum()) +
-                                        ": " + doc.ErrorName());
+                                        where + ": " + doc.ErrorName());
+  }
   const XMLElement* scene = doc.FirstChildElement("Scene");
   if (!scene) throw input_error(file_, "XML", "no <Scene> root element");
   scene_.file = file_;
@@ -488,13 +565,14 @@ SceneDesc Loader::load() {
     if (!known.count(e->Name())) warn(e, "unknown element, ignored");
   scene_.background = child_vec3(scene, "BackgroundColor", {});
   scene_.shadow_epsilon = child_number(scene, "ShadowRayEpsilon", 1e-3);
-  if (scene_.shadow_epsilon < 0) fail(child(scene, "ShadowRayEpsilon", true), "must not be negative");
+  if (scene_.shadow_epsilon < 0) fail_value(child(scene, "ShadowRayEpsilon", true), "must not be negative");
   scene_.intersection_epsilon = child_number(scene, "IntersectionTestEpsilon", 1e-6);
+  if (scene_.intersection_epsilon < 0)
+    fail_value(child(scene, "IntersectionTestEpsilon", true), "must not be negative");
   if (const XMLElement* d = child(scene, "MaxRecursionDepth", false)) {
     double v = number(d);
     if (v < 0 || v != std::floor(v) || v > RT_MAX_DEPTH)
-      fail(d, "'" + shorten(d->GetText()) + "' is not a whole number in [0, " +
-                  std::to_string(RT_MAX_DEPTH) + "]");
+      fail_value(d, "is not a whole number in [0, " + std::to_string(RT_MAX_DEPTH) + "]");
     scene_.max_depth = static_cast<int>(v);
   }
   read_cameras(scene);

@@ -2,10 +2,10 @@
 // reference, the compiled-kernel cache and the no-device path of the raytracer binary.
 // Tests that need a device are skipped when none is usable.
 #define CL_HPP_ENABLE_EXCEPTIONS
-#include <CL/opencl.hpp>
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <sys/wait.h>
+#include <CL/opencl.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -39,9 +39,9 @@ rt::ClRenderer* shared_renderer(std::string* why) {
   return renderer.get();
 }
 
-#define REQUIRE_DEVICE(r)                                       \
-  std::string why_;                                             \
-  rt::ClRenderer* r = shared_renderer(&why_);                   \
+#define REQUIRE_DEVICE(r)                     \
+  std::string why_;                           \
+  rt::ClRenderer* r = shared_renderer(&why_); \
   if (!r) GTEST_SKIP() << "no OpenCL device: " << why_
 
 fs::path make_temp_dir(const std::string& tag) {
@@ -111,12 +111,13 @@ void expect_agree(const std::string& label, const rt::RenderResult& cl,
     }
   }
   double n = static_cast<double>(cl.accum.size());
-  std::printf("[ %s ] %dx%d: %.2f%% of pixel sums bit-identical, %.2f%% same primary hit, "
-              "max |rgb difference| %.3g (max value %.3g, worst pixel %zu,%zu), rays %llu vs "
-              "%llu\n",
-              label.c_str(), cl.width, cl.height, 100.0 * identical / n, 100.0 * same_primary / n,
-              max_diff, max_value, worst % cl.width, worst / cl.width,
-              static_cast<unsigned long long>(cl.rays), static_cast<unsigned long long>(cpu.rays));
+  std::printf(
+      "[ %s ] %dx%d: %.2f%% of pixel sums bit-identical, %.2f%% same primary hit, "
+      "max |rgb difference| %.3g (max value %.3g, worst pixel %zu,%zu), rays %llu vs "
+      "%llu\n",
+      label.c_str(), cl.width, cl.height, 100.0 * identical / n, 100.0 * same_primary / n, max_diff,
+      max_value, worst % cl.width, worst / cl.width, static_cast<unsigned long long>(cl.rays),
+      static_cast<unsigned long long>(cpu.rays));
   EXPECT_GT(max_value, 0.0f) << label << ": black image";
   EXPECT_LE(max_diff, 1e-3f * max_value) << label;
   EXPECT_GE(identical, cl.accum.size() / 2) << label << ": most pixels should be bit-identical";
@@ -217,8 +218,7 @@ TEST(OpenCl, KernelBuildsSpecializedAndGeneric) {
 
   for (int extra : {RT_FEATURE_MIRROR | RT_FEATURE_DIELECTRIC | RT_FEATURE_MULTISAMPLE,
                     RT_FEATURE_SMOOTH | RT_FEATURE_AREA_LIGHTS | RT_FEATURE_MOTION_BLUR |
-                        RT_FEATURE_DEPTH_OF_FIELD | RT_FEATURE_CONDUCTOR |
-                        RT_FEATURE_ROUGHNESS}) {
+                        RT_FEATURE_DEPTH_OF_FIELD | RT_FEATURE_CONDUCTOR | RT_FEATURE_ROUGHNESS}) {
     rt::FlatScene f = l.flat;
     f.header.features |= extra;
     rt::ClTimings te;
@@ -356,8 +356,8 @@ TEST(OpenCl, NoPlatformPath) {
   fs::create_directories(vendors);
   fs::create_directories(out);
   std::string scene = kScenes + "/hw1/simple.xml";
-  std::string base = "OCL_ICD_VENDORS='" + vendors.string() + "' '" RT_RAYTRACER_EXE "' '" +
-                     scene + "' --output-dir '" + out.string() + "' ";
+  std::string base = "OCL_ICD_VENDORS='" + vendors.string() + "' '" RT_RAYTRACER_EXE "' '" + scene +
+                     "' --output-dir '" + out.string() + "' ";
   fs::path err = dir / "err.txt";
 
   int rc = run(base + "--device cl >/dev/null 2>'" + err.string() + "'");
@@ -373,8 +373,8 @@ TEST(OpenCl, NoPlatformPath) {
   EXPECT_NE(e.find("CPU reference"), std::string::npos) << e;
   EXPECT_TRUE(fs::exists(out / "simple.png"));
 
-  rc = run("OCL_ICD_VENDORS='" + vendors.string() + "' '" RT_RAYTRACER_EXE
-           "' --list-devices >'" + err.string() + "' 2>&1");
+  rc = run("OCL_ICD_VENDORS='" + vendors.string() + "' '" RT_RAYTRACER_EXE "' --list-devices >'" +
+           err.string() + "' 2>&1");
   EXPECT_NE(rc, 0);
   EXPECT_NE(slurp(err).find("no OpenCL platform"), std::string::npos) << slurp(err);
 

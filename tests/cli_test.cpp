@@ -1,0 +1,313 @@
+// Runs the built raytracer on bad input and checks what a user sees: one error line on
+// stderr, the documented exit status (1 for bad input, 2 for bad usage), no PNG or
+// temporary file left behind, and no hang.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "png_io.h"
+
+#ifndef RT_RAYTRACER_EXE
+#error "RT_RAYTRACER_EXE must name the raytracer executable"
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A tiny scene (16 x 8 pixels, two triangles and a sphere) that renders in milliseconds.
+const char* kScene = R"(<Scene>
+    <BackgroundColor>0 0 0</BackgroundColor>
+    <Cameras>
+        <Camera id="1">
+            <Position>0 0 0</Position>
+            <Gaze>0 0 -1</Gaze>
+            <Up>0 1 0</Up>
+            <NearPlane>-1 1 -0.5 0.5</NearPlane>
+            <NearDistance>1</NearDistance>
+            <ImageResolution>16 8</ImageResolution>
+            <ImageName>simple.png</ImageName>
+        </Camera>
+    </Cameras>
+    <Lights>
+        <AmbientLight>25 25 25</AmbientLight>
+        <PointLight id="1">
+            <Position>0 0 0</Position>
+            <Intensity>1000 1000 1000</Intensity>
+        </PointLight>
+    </Lights>
+    <Materials>
+        <Material id="1">
+            <AmbientReflectance>1 1 1</AmbientReflectance>
+            <DiffuseReflectance>1 1 1</DiffuseReflectance>
+        </Material>
+    </Materials>
+    <VertexData>
+        -0.5 0.5 -2
+        -0.5 -0.5 -2
+        0.5 -0.5 -2
+        0.5 0.5 -2
+    </VertexData>
+    <Objects>
+        <Mesh id="1">
+            <Material>1</Material>
+            <Faces>
+                3 1 2
+                1 3 4
+            </Faces>
+        </Mesh>
+        <Sphere id="1">
+            <Material>1</Material>
+            <Center>4</Center>
+            <Radius>0.3</Radius>
+        </Sphere>
+    </Objects>
+</Scene>
+)";
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+struct Run {
+  int code = -1;  // Exit status; 124 when `timeout` killed it.
+  std::string out, err;
+  double seconds = 0;
+};
+
+class CliBadInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("rt_cli_" + std::to_string(getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "out");
+    out_ = (dir_ / "out").string();
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p.string();
+  }
+
+  // Runs the raytracer with `args` (already quoted), stdin empty, stdout and stderr captured
+  // to files (so neither is a terminal), under a 10 s timeout.
+  Run run(const std::string& args) {
+    fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
+    std::string cmd = "timeout 10 " + quote(RT_RAYTRACER_EXE) + " " + args + " <" + quote("/dev/null") +
+                      " >" + quote(o.string()) + " 2>" + quote(e.string());
+    auto t0 = std::chrono::steady_clock::now();
+    int status = std::system(cmd.c_str());
+    Run r;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(o);
+    r.err = slurp(e);
+    return r;
+  }
+  // The usual options: CPU, quiet, the temporary output directory.
+  Run render(const std::string& scene, const std::string& extra = "") {
+    return run(quote(scene) + " --device cpu --quiet --output-dir " + quote(out_) + " " + extra);
+  }
+
+  std::vector<std::string> output_files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_ / "out")) names.push_back(e.path().filename());
+    return names;
+  }
+
+  fs::path dir_;
+  std::string out_;
+};
+
+// One line: exactly one newline, at the end, after the "raytracer: error: " prefix.
+void expect_one_error_line(const Run& r) {
+  EXPECT_EQ(r.err.rfind("raytracer: error: ", 0), 0u) << r.err;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.back(), '\n') << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line:\n" << r.err;
+}
+
+TEST_F(CliBadInput, MalformedSceneOneLineNoPng) {
+  std::string scene = write("bad.xml", replaced(kScene, "</ImageName>", ""));
+  Run r = render(scene);
+  EXPECT_EQ(r.code, 1);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find(scene), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("malformed"), std::string::npos) << r.err;
+  EXPECT_TRUE(output_files().empty());
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST_F(CliBadInput, BadValueOneLineNamesElementAndValue) {
+  std::string scene = write("bad.xml", replaced(kScene, "<Gaze>0 0 -1", "<Gaze>0 0 0"));
+  Run r = render(scene);
+  EXPECT_EQ(r.code, 1);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find(scene + ": Cameras > Camera id=1 > Gaze: '0 0 0'"), std::string::npos) << r.err;
+  EXPECT_TRUE(output_files().empty());
+}
+
+TEST_F(CliBadInput, MissingSceneFile) {
+  std::string scene = (dir_ / "absent.xml").string();
+  Run r = render(scene);
+  EXPECT_EQ(r.code, 1);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find(scene), std::string::npos) << r.err;
+  EXPECT_TRUE(output_files().empty());
+}
+
+TEST_F(CliBadInput, MissingOutputDirectory) {
+  std::string scene = write("s.xml", kScene);
+  std::string missing = (dir_ / "no_such_dir").string();
+  Run r = run(quote(scene) + " --device cpu --quiet --output-dir " + quote(missing));
+  EXPECT_EQ(r.code, 1);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find(missing), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(missing));
+}
+
+TEST_F(CliBadInput, UnwritableOutputLeavesNoTempFile) {
+  std::string scene = write("s.xml", kScene);
+  fs::create_directory(dir_ / "out" / "simple.png");  // rename() onto a directory fails
+  Run r = render(scene);
+  EXPECT_EQ(r.code, 1);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("simple.png"), std::string::npos) << r.err;
+  EXPECT_EQ(output_files(), std::vector<std::string>{"simple.png"});
+  EXPECT_TRUE(fs::is_directory(dir_ / "out" / "simple.png"));
+  EXPECT_TRUE(fs::is_empty(dir_ / "out" / "simple.png"));
+}
+
+TEST_F(CliBadInput, ImageNameInMissingSubdirectory) {
+  std::string scene = write("s.xml", replaced(kScene, "<ImageName>simple.png", "<ImageName>sub/x.png"));
+  Run r = render(scene);
+  EXPECT_EQ(r.code, 1);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("x.png"), std::string::npos) << r.err;
+  EXPECT_TRUE(output_files().empty());
+}
+
+TEST_F(CliBadInput, UnknownOptionIsUsageError) {
+  std::string scene = write("s.xml", kScene);
+  Run r = render(scene, "--frobnicate");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--frobnicate"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_TRUE(output_files().empty());
+}
+
+TEST_F(CliBadInput, NonNumericSppIsUsageError) {
+  std::string scene = write("s.xml", kScene);
+  Run r = render(scene, "--spp abc");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--spp"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'abc'"), std::string::npos) << r.err;
+  EXPECT_TRUE(output_files().empty());
+  EXPECT_EQ(render(scene, "--spp").code, 2);  // missing value
+  EXPECT_EQ(render(scene, "--spp 0").code, 2);
+}
+
+TEST_F(CliBadInput, MissingOpenClDevice) {
+  std::string scene = write("s.xml", kScene);
+  Run r = run(quote(scene) + " --device cl --cl-device no-such-device-xyzzy --quiet --output-dir " +
+              quote(out_));
+  EXPECT_EQ(r.code, 1);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("OpenCL"), std::string::npos) << r.err;
+  EXPECT_TRUE(output_files().empty());
+}
+
+// The PNG must be 8-bit RGB: IHDR bytes 24 and 25 hold the bit depth and colour type.
+TEST_F(CliBadInput, GoodSceneRendersPng) {
+  std::string scene = write("s.xml", kScene);
+  Run r = render(scene);
+  ASSERT_EQ(r.code, 0) << r.err;
+  fs::path png = dir_ / "out" / "simple.png";
+  ASSERT_TRUE(fs::is_regular_file(png));
+  EXPECT_EQ(output_files(), std::vector<std::string>{"simple.png"});
+  std::string bytes = slurp(png);
+  ASSERT_GT(bytes.size(), 33u);
+  EXPECT_EQ(bytes.substr(12, 4), "IHDR");
+  EXPECT_EQ(static_cast<int>(bytes[24]), 8);  // bit depth
+  EXPECT_EQ(static_cast<int>(bytes[25]), 2);  // colour type 2: RGB, no alpha
+  rt::Image8 img = rt::read_png(png.string());
+  EXPECT_EQ(img.width, 16);
+  EXPECT_EQ(img.height, 8);
+  // The lit quad covers the centre; the corners see the black background.
+  auto at = [&](int x, int y) { return img.rgb[(y * img.width + x) * 3]; };
+  EXPECT_GT(at(7, 4), 0);
+  EXPECT_EQ(at(0, 0), 0);
+}
+
+TEST_F(CliBadInput, QuietSuccessIsSilent) {
+  std::string scene = write("s.xml", kScene);
+  Run r = render(scene);
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  // Without --quiet, stderr is not a terminal here, so there is no progress line either.
+  r = run(quote(scene) + " --device cpu --output-dir " + quote(out_));
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(CliBadInput, HelpAndVersion) {
+  Run r = run("--help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("--device"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err, "");
+  r = run("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.rfind("raytracer ", 0), 0u) << r.out;
+  ASSERT_GT(r.out.size(), 10u);
+  EXPECT_TRUE(std::isdigit(static_cast<unsigned char>(r.out[10]))) << r.out;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(run("").code, 2);  // no scene file
+}
+
+TEST_F(CliBadInput, HugePlyFaceCountDoesNotHang) {
+  write("m.ply",
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 2147483647\n"
+        "property list uchar int vertex_indices\nend_header\n" +
+            std::string(3 * 12, '\0') + std::string("\x03\0\0\0\0\1\0\0\0\2\0\0\0", 13));
+  std::string scene = write(
+      "s.xml", replaced(kScene, "<Faces>\n                3 1 2\n                1 3 4\n            </Faces>",
+                        "<Faces plyFile=\"m.ply\"/>"));
+  Run r = render(scene);
+  EXPECT_EQ(r.code, 1);  // 124 would mean `timeout` had to kill it
+  EXPECT_LT(r.seconds, 5);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("m.ply"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("2147483647"), std::string::npos) << r.err;
+  EXPECT_TRUE(output_files().empty());
+}
+
+}  // namespace

@@ -1,0 +1,16 @@
+#!/bin/sh
+# Installs the build and test dependencies from Debian 12 packages (as root, or through
+# sudo). Does nothing when every package is already installed.
+set -eu
+PACKAGES="cmake g++ make pkg-config libtinyxml2-dev libpng-dev zlib1g-dev ocl-icd-opencl-dev
+  opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo libgtest-dev"
+missing=""
+for p in $PACKAGES; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+echo "installing:$missing"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing
