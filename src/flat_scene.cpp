@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "cl/features.h"
 
@@ -127,6 +128,8 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     Instance inst{};
     bool ok;
     Mat4 inv = o.transform.affine_inverse(&ok);
+    // The loader rejects singular transforms; a caller building scenes in code must too.
+    if (!ok) throw std::invalid_argument(o.element + ": singular transform");
     set_rows(inst.world_to_object, inv);
     set_rows(inst.object_to_world, o.transform);
     inst.motion = to_float3(o.motion);

@@ -1,5 +1,7 @@
 // raytracer: renders every camera of a scene file to PNG on an OpenCL device or with the
 // CPU reference renderer.
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <chrono>
@@ -27,8 +29,13 @@ int run(const rt::CliOptions& opt) {
     throw rt::input_error(opt.scene, "Cameras", "no camera " + std::to_string(opt.camera) +
                                                     " (the file has " +
                                                     std::to_string(scene.cameras.size()) + ")");
-  if (!std::filesystem::is_directory(opt.output_dir))
+  std::error_code ec;
+  if (!std::filesystem::exists(opt.output_dir, ec))
     throw std::runtime_error(opt.output_dir + ": output directory does not exist");
+  if (!std::filesystem::is_directory(opt.output_dir, ec))
+    throw std::runtime_error(opt.output_dir + ": output path is not a directory");
+  if (access(opt.output_dir.c_str(), W_OK) != 0)
+    throw std::runtime_error(opt.output_dir + ": output directory is not writable");
   rt::FlatScene flat = rt::flatten_scene(scene, opt.render);
   std::unique_ptr<rt::ClRenderer> cl;
   if (opt.device != rt::Device::kCpu) {

@@ -3,6 +3,7 @@
 #include <tinyxml2.h>
 
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -142,6 +143,8 @@ std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count,
       fail(e, "not a number: '" + shorten(token) + "'");
     // Overflow gives inf; underflow (1e-400) is a representable tiny value, not an error.
     if (!std::isfinite(v)) fail(e, "not a finite number: '" + shorten(token) + "'");
+    // The devices work in float: a larger value would turn into inf there.
+    if (std::fabs(v) > FLT_MAX) fail(e, "'" + shorten(token) + "' is too large (beyond float range)");
     out.push_back(v);
   }
   if (out.size() < min_count || out.size() > max_count) {
@@ -172,9 +175,14 @@ Vec3d Loader::child_vec3(const XMLElement* e, const char* name, Vec3d fallback) 
 }
 
 void Loader::read_cameras(const XMLElement* scene) {
-  const XMLElement* cams = child(scene, "Cameras", false);
-  for (auto* c = cams ? cams->FirstChildElement("Camera") : nullptr; c;
-       c = c->NextSiblingElement("Camera")) {
+  // Files of 2017 put <Camera> directly under <Scene>, without <Cameras>.
+  std::vector<const XMLElement*> list;
+  for (auto* c = scene->FirstChildElement("Camera"); c; c = c->NextSiblingElement("Camera"))
+    list.push_back(c);
+  if (const XMLElement* cams = child(scene, "Cameras", false))
+    for (auto* c = cams->FirstChildElement("Camera"); c; c = c->NextSiblingElement("Camera"))
+      list.push_back(c);
+  for (const XMLElement* c : list) {
     CameraDesc cam;
     cam.position = vec3(child(c, "Position", true));
     const XMLElement* up = child(c, "Up", true);
@@ -192,6 +200,8 @@ void Loader::read_cameras(const XMLElement* scene) {
       cam.top = cam.near_distance * std::tan(fovy * M_PI / 360.0);
       cam.bottom = -cam.top;
     } else {
+      if (!child(c, "Gaze", false) && child(c, "GazePoint", false))
+        fail(c, "missing <Gaze> (a camera with <GazePoint> needs type=\"lookAt\")");
       cam.gaze = nonzero(child(c, "Gaze", true), vec3(child(c, "Gaze", true)));
       // Some course files carry a fifth number (the near distance again); it is ignored.
       auto np = numbers(child(c, "NearPlane", true), 4, 5);
@@ -221,6 +231,10 @@ void Loader::read_cameras(const XMLElement* scene) {
     image.erase(0, image.find_first_not_of(" \t\r\n"));
     image.erase(image.find_last_not_of(" \t\r\n") + 1);
     if (image.empty()) fail(name, "empty image name");
+    // Output stays inside --output-dir: no directories, no way out of it.
+    if (image.find('/') != std::string::npos || image.find('\\') != std::string::npos ||
+        image == "." || image == "..")
+      fail_value(name, "must be a plain file name");
     cam.image_name = image;
     if (const XMLElement* ns = child(c, "NumSamples", false)) {
       double n = number(ns);
@@ -526,6 +540,11 @@ void Loader::read_objects(const XMLElement* scene) {
       warn(e, "unknown object type, ignored");
       continue;
     }
+    // Each factor was checked, but a product (radius 1e-120, a chain of instances) can
+    // still underflow to a singular matrix, which the devices cannot invert.
+    bool invertible;
+    o.transform.affine_inverse(&invertible);
+    if (!invertible) fail(e, "the object's composed transformation is singular");
     scene_.objects.push_back(o);
   }
 }
@@ -559,7 +578,7 @@ SceneDesc Loader::load() {
   scene_.file = file_;
   static const std::set<std::string> known = {
       "BackgroundColor", "ShadowRayEpsilon", "IntersectionTestEpsilon", "MaxRecursionDepth",
-      "Cameras", "Lights", "Materials", "Transformations", "VertexData", "TexCoordData",
+      "Camera", "Cameras", "Lights", "Materials", "Transformations", "VertexData", "TexCoordData",
       "Textures", "Objects"};
   for (auto* e = scene->FirstChildElement(); e; e = e->NextSiblingElement())
     if (!known.count(e->Name())) warn(e, "unknown element, ignored");

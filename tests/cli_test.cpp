@@ -91,7 +91,7 @@ std::string slurp(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-struct Run {
+struct Outcome {
   int code = -1;  // Exit status; 124 when `timeout` killed it.
   std::string out, err;
   double seconds = 0;
@@ -117,13 +117,13 @@ class CliBadInput : public ::testing::Test {
 
   // Runs the raytracer with `args` (already quoted), stdin empty, stdout and stderr captured
   // to files (so neither is a terminal), under a 10 s timeout.
-  Run run(const std::string& args) {
+  Outcome run(const std::string& args, const std::string& env = "") {
     fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
-    std::string cmd = "timeout 10 " + quote(RT_RAYTRACER_EXE) + " " + args + " <" + quote("/dev/null") +
+    std::string cmd = env + " timeout 10 " + quote(RT_RAYTRACER_EXE) + " " + args + " <" + quote("/dev/null") +
                       " >" + quote(o.string()) + " 2>" + quote(e.string());
     auto t0 = std::chrono::steady_clock::now();
     int status = std::system(cmd.c_str());
-    Run r;
+    Outcome r;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     r.out = slurp(o);
@@ -131,7 +131,7 @@ class CliBadInput : public ::testing::Test {
     return r;
   }
   // The usual options: CPU, quiet, the temporary output directory.
-  Run render(const std::string& scene, const std::string& extra = "") {
+  Outcome render(const std::string& scene, const std::string& extra = "") {
     return run(quote(scene) + " --device cpu --quiet --output-dir " + quote(out_) + " " + extra);
   }
 
@@ -146,7 +146,7 @@ class CliBadInput : public ::testing::Test {
 };
 
 // One line: exactly one newline, at the end, after the "raytracer: error: " prefix.
-void expect_one_error_line(const Run& r) {
+void expect_one_error_line(const Outcome& r) {
   EXPECT_EQ(r.err.rfind("raytracer: error: ", 0), 0u) << r.err;
   ASSERT_FALSE(r.err.empty());
   EXPECT_EQ(r.err.back(), '\n') << r.err;
@@ -155,7 +155,7 @@ void expect_one_error_line(const Run& r) {
 
 TEST_F(CliBadInput, MalformedSceneOneLineNoPng) {
   std::string scene = write("bad.xml", replaced(kScene, "</ImageName>", ""));
-  Run r = render(scene);
+  Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find(scene), std::string::npos) << r.err;
@@ -166,7 +166,7 @@ TEST_F(CliBadInput, MalformedSceneOneLineNoPng) {
 
 TEST_F(CliBadInput, BadValueOneLineNamesElementAndValue) {
   std::string scene = write("bad.xml", replaced(kScene, "<Gaze>0 0 -1", "<Gaze>0 0 0"));
-  Run r = render(scene);
+  Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find(scene + ": Cameras > Camera id=1 > Gaze: '0 0 0'"), std::string::npos) << r.err;
@@ -175,7 +175,7 @@ TEST_F(CliBadInput, BadValueOneLineNamesElementAndValue) {
 
 TEST_F(CliBadInput, MissingSceneFile) {
   std::string scene = (dir_ / "absent.xml").string();
-  Run r = render(scene);
+  Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find(scene), std::string::npos) << r.err;
@@ -185,7 +185,7 @@ TEST_F(CliBadInput, MissingSceneFile) {
 TEST_F(CliBadInput, MissingOutputDirectory) {
   std::string scene = write("s.xml", kScene);
   std::string missing = (dir_ / "no_such_dir").string();
-  Run r = run(quote(scene) + " --device cpu --quiet --output-dir " + quote(missing));
+  Outcome r = run(quote(scene) + " --device cpu --quiet --output-dir " + quote(missing));
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find(missing), std::string::npos) << r.err;
@@ -195,7 +195,7 @@ TEST_F(CliBadInput, MissingOutputDirectory) {
 TEST_F(CliBadInput, UnwritableOutputLeavesNoTempFile) {
   std::string scene = write("s.xml", kScene);
   fs::create_directory(dir_ / "out" / "simple.png");  // rename() onto a directory fails
-  Run r = render(scene);
+  Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find("simple.png"), std::string::npos) << r.err;
@@ -206,7 +206,7 @@ TEST_F(CliBadInput, UnwritableOutputLeavesNoTempFile) {
 
 TEST_F(CliBadInput, ImageNameInMissingSubdirectory) {
   std::string scene = write("s.xml", replaced(kScene, "<ImageName>simple.png", "<ImageName>sub/x.png"));
-  Run r = render(scene);
+  Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find("x.png"), std::string::npos) << r.err;
@@ -215,7 +215,7 @@ TEST_F(CliBadInput, ImageNameInMissingSubdirectory) {
 
 TEST_F(CliBadInput, UnknownOptionIsUsageError) {
   std::string scene = write("s.xml", kScene);
-  Run r = render(scene, "--frobnicate");
+  Outcome r = render(scene, "--frobnicate");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--frobnicate"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
@@ -224,7 +224,7 @@ TEST_F(CliBadInput, UnknownOptionIsUsageError) {
 
 TEST_F(CliBadInput, NonNumericSppIsUsageError) {
   std::string scene = write("s.xml", kScene);
-  Run r = render(scene, "--spp abc");
+  Outcome r = render(scene, "--spp abc");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--spp"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("'abc'"), std::string::npos) << r.err;
@@ -235,18 +235,28 @@ TEST_F(CliBadInput, NonNumericSppIsUsageError) {
 
 TEST_F(CliBadInput, MissingOpenClDevice) {
   std::string scene = write("s.xml", kScene);
-  Run r = run(quote(scene) + " --device cl --cl-device no-such-device-xyzzy --quiet --output-dir " +
+  Outcome r = run(quote(scene) + " --device cl --cl-device no-such-device-xyzzy --quiet --output-dir " +
               quote(out_));
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find("OpenCL"), std::string::npos) << r.err;
   EXPECT_TRUE(output_files().empty());
+  // No platform at all: the Khronos ICD loader finds no vendors here. (Another loader may
+  // ignore the variable and render; then there is nothing to check.)
+  r = run(quote(scene) + " --device cl --quiet --output-dir " + quote(out_),
+          "env OCL_ICD_VENDORS=" + quote((dir_ / "no_vendors").string()) + " OCL_ICD_FILENAMES=");
+  if (r.code != 0) {
+    EXPECT_EQ(r.code, 1);
+    expect_one_error_line(r);
+    EXPECT_NE(r.err.find("OpenCL"), std::string::npos) << r.err;
+    EXPECT_TRUE(output_files().empty());
+  }
 }
 
 // The PNG must be 8-bit RGB: IHDR bytes 24 and 25 hold the bit depth and colour type.
 TEST_F(CliBadInput, GoodSceneRendersPng) {
   std::string scene = write("s.xml", kScene);
-  Run r = render(scene);
+  Outcome r = render(scene);
   ASSERT_EQ(r.code, 0) << r.err;
   fs::path png = dir_ / "out" / "simple.png";
   ASSERT_TRUE(fs::is_regular_file(png));
@@ -267,7 +277,7 @@ TEST_F(CliBadInput, GoodSceneRendersPng) {
 
 TEST_F(CliBadInput, QuietSuccessIsSilent) {
   std::string scene = write("s.xml", kScene);
-  Run r = render(scene);
+  Outcome r = render(scene);
   EXPECT_EQ(r.code, 0);
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.err, "");
@@ -279,7 +289,7 @@ TEST_F(CliBadInput, QuietSuccessIsSilent) {
 }
 
 TEST_F(CliBadInput, HelpAndVersion) {
-  Run r = run("--help");
+  Outcome r = run("--help");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("--device"), std::string::npos) << r.out;
   EXPECT_EQ(r.err, "");
@@ -301,7 +311,7 @@ TEST_F(CliBadInput, HugePlyFaceCountDoesNotHang) {
   std::string scene = write(
       "s.xml", replaced(kScene, "<Faces>\n                3 1 2\n                1 3 4\n            </Faces>",
                         "<Faces plyFile=\"m.ply\"/>"));
-  Run r = render(scene);
+  Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);  // 124 would mean `timeout` had to kill it
   EXPECT_LT(r.seconds, 5);
   expect_one_error_line(r);

@@ -221,6 +221,17 @@ TEST_F(LoaderErrors, NonFiniteOrNonNumericInVector) {
   expect_error({{"-0.5 -0.5 -2", "-0.5 inf -2"}}, {"VertexData", "'inf'"});
 }
 
+TEST_F(LoaderErrors, BeyondFloatRange) {
+  // Finite in double, inf once the devices convert to float.
+  expect_error({{"-0.5 -0.5 -2", "-0.5 1e39 -2"}}, {"VertexData", "'1e39'", "float"});
+  expect_error({{"<Radius>0.3</Radius>", "<Radius>-4e38</Radius>"}}, {"Sphere id=1 > Radius", "'-4e38'"});
+}
+
+TEST_F(LoaderErrors, SingularComposedTransform) {
+  // Each factor is fine; radius^3 underflows to a zero determinant.
+  expect_error({{"<Radius>0.3</Radius>", "<Radius>1e-120</Radius>"}}, {"Sphere id=1", "singular"});
+}
+
 TEST_F(LoaderErrors, WrongCountOfNumbers) {
   expect_error({{"<Gaze>0 0 -1</Gaze>", "<Gaze>0 -1</Gaze>"}},
                {"Camera id=1 > Gaze", "expected 3 numbers, got 2", "'0 -1'"});
@@ -255,6 +266,11 @@ TEST_F(LoaderErrors, LookAtGazePointAtPosition) {
   expect_error({{"<Camera id=\"1\">", "<Camera id=\"1\" type=\"lookAt\">"},
                 {"<Gaze>0 0 -1</Gaze>", "<GazePoint>0 0 0</GazePoint><FovY>45</FovY>"}},
                {"Camera id=1 > GazePoint", "'0 0 0'", "Position"});
+}
+
+TEST_F(LoaderErrors, GazePointWithoutLookAt) {
+  expect_error({{"<Gaze>0 0 -1</Gaze>", "<GazePoint>0 0 -1</GazePoint><FovY>45</FovY>"}},
+               {"Camera id=1", "missing <Gaze>", "lookAt"});
 }
 
 TEST_F(LoaderErrors, BadResolutionNearDistanceAndSamples) {
@@ -332,8 +348,8 @@ TEST_F(LoaderErrors, SphereCenterOutOfRange) {
                {"Sphere id=1 > Center", "vertex index 9", "[1, 8]"});
   expect_error({{"<Center>8</Center>", "<Center>0</Center>"}},
                {"Sphere id=1 > Center", "vertex index 0"});
-  expect_error({{"<Center>8</Center>", "<Center>-1e300</Center>"}},
-               {"Sphere id=1 > Center", "-1e+300"});
+  expect_error({{"<Center>8</Center>", "<Center>-3e38</Center>"}},
+               {"Sphere id=1 > Center", "vertex index -3e+38"});
 }
 
 TEST_F(LoaderErrors, NonIntegerIndex) {
@@ -542,6 +558,17 @@ TEST_F(LoaderAccepts, LookAtCamera) {
   EXPECT_NEAR(c.right, top * 40 / 20, 1e-12);
   EXPECT_NEAR(c.left, -top * 2, 1e-12);
   EXPECT_EQ(c.gaze.z, -5);
+}
+
+TEST_F(LoaderAccepts, CameraOutsideCameras) {
+  // Files of 2017 have no <Cameras> wrapper.
+  std::string xml = edit(kBase, {{"    <Cameras>\n", ""}, {"    </Cameras>\n", ""}});
+  SceneDesc s = load_scene(write("scene.xml", xml));
+  ASSERT_EQ(s.cameras.size(), 1u);
+  EXPECT_EQ(s.cameras[0].image_name, "simple.png");
+  EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
+  expect_error(write("bad.xml", edit(xml, {{"<Up>0 1 0</Up>", "<Up>0 0 0</Up>"}})),
+               {": Camera id=1 > Up: '0 0 0'"});
 }
 
 TEST_F(LoaderAccepts, MotionBlur) {
