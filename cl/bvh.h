@@ -22,6 +22,15 @@ RT_DEVICE float IntersectBox(RT_GLOBAL const BvhNode* node, float3 o, float3 inv
   float tx0 = (node->lo[0] - o.x) * inv_d.x, tx1 = (node->hi[0] - o.x) * inv_d.x;
   float ty0 = (node->lo[1] - o.y) * inv_d.y, ty1 = (node->hi[1] - o.y) * inv_d.y;
   float tz0 = (node->lo[2] - o.z) * inv_d.z, tz1 = (node->hi[2] - o.z) * inv_d.z;
+  // A ray in the plane of a face (zero direction component, origin on the face) gives
+  // 0 * inf = NaN there and +-inf at the other face. It stays inside that slab for every t,
+  // so the NaN becomes the opposite infinity and the slab constrains nothing.
+  tx0 = tx0 != tx0 ? -tx1 : tx0;
+  tx1 = tx1 != tx1 ? -tx0 : tx1;
+  ty0 = ty0 != ty0 ? -ty1 : ty0;
+  ty1 = ty1 != ty1 ? -ty0 : ty1;
+  tz0 = tz0 != tz0 ? -tz1 : tz0;
+  tz1 = tz1 != tz1 ? -tz0 : tz1;
   float tnear = MaxF(MaxF(MinF(tx0, tx1), MinF(ty0, ty1)), MaxF(MinF(tz0, tz1), 0.0f));
   float tfar = MinF(MinF(MaxF(tx0, tx1), MaxF(ty0, ty1)), MinF(MaxF(tz0, tz1), tmax));
   tfar *= 1.0000004f;

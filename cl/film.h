@@ -10,8 +10,9 @@
 typedef struct PixelAccum {
   float4 sum;
   float4 sum_sq;
-  uint rays;  // Rays cast for this pixel, for the rays/s figures.
-  uint pad0, pad1, pad2;
+  uint rays;       // Rays cast for this pixel, for the rays/s figures.
+  uint nonfinite;  // Samples whose radiance was NaN or infinite; they are left out.
+  uint pad1, pad2;
 } PixelAccum;
 
 RT_DEVICE float4 AddFloat4(float4 a, float3 v, float w) {
@@ -32,9 +33,14 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
     float w;
     PrimaryInfo info;
     float3 l = RenderSample(sd, x, y, (uint)s, &w, &info, &rays);
+    if (s == 0) *primary = info;
+    if (!isfinite(l.x) || !isfinite(l.y) || !isfinite(l.z)) {
+      // Counted, so --stats and the tests can fail on it, but kept off the film.
+      a.nonfinite += 1u;
+      continue;
+    }
     a.sum = AddFloat4(a.sum, l * w, w);
     a.sum_sq = AddFloat4(a.sum_sq, l * l, 1.0f);
-    if (s == 0) *primary = info;
   }
   a.rays += rays;
   *acc = a;

@@ -22,12 +22,16 @@ RT_DEVICE float3 BlinnPhong(RT_GLOBAL const Material* m, float3 n, float3 wo, fl
 // eta_i to eta_t; cos_i > 0 is the cosine on the incident side. Total internal
 // reflection returns 1 and *cos_t = 0.
 RT_DEVICE float FrDielectric(float cos_i, float eta_i, float eta_t, RT_PRIVATE float* cos_t) {
-  float sin2_t = (eta_i / eta_t) * (eta_i / eta_t) * fmax(0.0f, 1.0f - cos_i * cos_i);
-  if (sin2_t >= 1.0f) {
+  // cos_t^2 = 1 - eta^2 (1 - cos_i^2), grouped so that matched indices give cos_t = cos_i
+  // instead of cancelling in 1 - (1 - cos_i^2) (which reports total internal reflection
+  // below cos_i ~ 2.4e-4).
+  float eta2 = (eta_i / eta_t) * (eta_i / eta_t);
+  float cos2_t = (1.0f - eta2) + eta2 * (cos_i * cos_i);
+  if (cos2_t <= 0.0f) {
     *cos_t = 0.0f;
     return 1.0f;
   }
-  float ct = sqrt(1.0f - sin2_t);
+  float ct = sqrt(cos2_t);
   *cos_t = ct;
   float r_par = (eta_t * cos_i - eta_i * ct) / (eta_t * cos_i + eta_i * ct);
   float r_perp = (eta_i * cos_i - eta_t * ct) / (eta_i * cos_i + eta_t * ct);

@@ -46,7 +46,10 @@ RT_DEVICE float OffsetComponent(float p, float n) {
 // offset that keeps the ray off the surface even where that epsilon is too small for the
 // magnitude of p.
 RT_DEVICE float3 OffsetRayOrigin(float3 p, float3 n, float scene_epsilon) {
-  float3 q = p + n * scene_epsilon;
+  // Intersection tests near p round in proportion to its largest coordinate, not to the
+  // coordinates along n (a plane y = 0 far out along x): move 256 ulps of that first.
+  const float kRelative = 256.0f / 8388608.0f;
+  float3 q = p + n * (scene_epsilon + kRelative * MaxComponent(Abs3(p)));
   return make_float3(OffsetComponent(q.x, n.x), OffsetComponent(q.y, n.y),
                      OffsetComponent(q.z, n.z));
 }

@@ -30,6 +30,12 @@ Output:
   --camera N             render only camera N (0-based, in file order)
   --quiet                no progress and no notices
   --stats                print timings, BVH figures, samples/s and rays/s, features
+  --moments              also write <ImageName minus .png>.moments.exr beside each PNG:
+                         per-pixel sample count, mean and variance of the unclamped
+                         radiance, and the first sample's hit (OpenEXR; see
+                         compare --help and src/moments.h for the channels)
+  --resolution-scale F   render width*F x height*F pixels (rounded, at least 1) of the
+                         same view, e.g. for quick tests (default 1)
 
 Sampling:
   --spp N                samples per pixel, overriding the scene's NumSamples
@@ -108,6 +114,15 @@ CliOptions parse_cli(int argc, char** argv) {
       o.quiet = true;
     } else if (a == "--stats") {
       o.stats = true;
+    } else if (a == "--moments") {
+      o.moments = true;
+    } else if (a == "--resolution-scale") {
+      const char* v = value();
+      char* end = nullptr;
+      double f = std::strtod(v, &end);
+      if (!*v || *end || !(f > 0 && f <= 16))
+        usage_error(std::string("--resolution-scale: '") + v + "' is not in (0, 16]");
+      o.resolution_scale = f;
     } else if (a == "--spp") {
       o.render.spp = static_cast<int>(parse_long("--spp", value(), 1, 1 << 20));
     } else if (a == "--seed") {

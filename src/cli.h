@@ -21,6 +21,8 @@ struct CliOptions {
   int camera = -1;  // -1: every camera.
   bool quiet = false;
   bool stats = false;
+  bool moments = false;           // Also write <image>.moments.exr beside each PNG.
+  double resolution_scale = 1.0;  // Scales every camera's pixel count, same view.
   RenderOptions render;
 };
 

@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <chrono>
+#include <cmath>
 
 #include "cli.h"
 #include "errors.h"
+#include "moments.h"
 #include "png_io.h"
 #include "render.h"
 #include "render_cl.h"
@@ -36,6 +38,12 @@ int run(const rt::CliOptions& opt) {
     throw std::runtime_error(opt.output_dir + ": output path is not a directory");
   if (access(opt.output_dir.c_str(), W_OK) != 0)
     throw std::runtime_error(opt.output_dir + ": output directory is not writable");
+  if (opt.resolution_scale != 1.0)
+    for (rt::CameraDesc& cam : scene.cameras) {
+      // The near plane is untouched, so the view stays the same at a different pixel count.
+      cam.width = std::max(1, static_cast<int>(std::lround(cam.width * opt.resolution_scale)));
+      cam.height = std::max(1, static_cast<int>(std::lround(cam.height * opt.resolution_scale)));
+    }
   rt::FlatScene flat = rt::flatten_scene(scene, opt.render);
   std::unique_ptr<rt::ClRenderer> cl;
   if (opt.device != rt::Device::kCpu) {
@@ -63,8 +71,17 @@ int run(const rt::CliOptions& opt) {
       r = rt::render_cpu(flat, opt.threads, progress);
     }
     progress.finish();
+    if (uint64_t bad = r.nonfinite())
+      std::fprintf(stderr, "warning: %s: %llu samples gave NaN or infinite radiance (left out)\n",
+                   cam.image_name.c_str(), static_cast<unsigned long long>(bad));
     std::filesystem::path out = std::filesystem::path(opt.output_dir) / cam.image_name;
     rt::write_png(out.string(), rt::to_8bit(r.width, r.height, r.rgb()));
+    if (opt.moments) {
+      rt::MomentInfo info{opt.render.seed, fc.samples,
+                          opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",
+                          cl ? cl->device_name() : "cpu-reference", opt.scene, c};
+      rt::write_moments(rt::moments_path_for(out.string()), rt::moments_from_render(r, info));
+    }
     if (opt.stats) {
       std::fprintf(stderr,
                    "stats: %s: device %s | load %.1f ms | bvh %.1f ms (%zu nodes, %zu triangles, "

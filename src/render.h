@@ -19,6 +19,8 @@ struct RenderResult {
 
   // The reconstructed image: weighted mean radiance per pixel, 3 floats each.
   std::vector<float> rgb() const;
+  // Samples that produced NaN or infinite radiance (left off the film); 0 when healthy.
+  uint64_t nonfinite() const;
 };
 
 // Renders the camera set in `flat` on `threads` CPU threads (0: all cores). The image

@@ -18,6 +18,12 @@ std::vector<float> RenderResult::rgb() const {
   return out;
 }
 
+uint64_t RenderResult::nonfinite() const {
+  uint64_t n = 0;
+  for (const PixelAccum& a : accum) n += a.nonfinite;
+  return n;
+}
+
 RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress) {
   const Camera& cam = flat.header.camera;
   RenderResult r;
