@@ -151,12 +151,8 @@ RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint
                               RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   RT_GLOBAL const Camera* cam = &h->camera;
-  SampleKey sk;
-  sk.pixel = (uint)(y * cam->width + x);
-  sk.sample = sample;
-  sk.samples = (uint)cam->samples;
-  sk.strata = (uint)cam->strata;
-  sk.seed = h->seed;
+  SampleKey sk = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples,
+                               (uint)cam->strata, h->seed);
   float2 film = make_float2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1) film = Stratified2D(sk, RT_DIM_PIXEL);
   float2 lens = make_float2(0.5f, 0.5f);

@@ -14,7 +14,7 @@ RT_DEVICE float3 BlinnPhong(RT_GLOBAL const Material* m, float3 n, float3 wo, fl
   if (cos_i <= 0.0f) return Vec3(0.0f);
   float3 h = Normalize(wi + wo);
   float cos_h = fmax(0.0f, Dot(n, h));
-  float spec = cos_h > 0.0f ? pow(cos_h, m->phong_exponent) : 0.0f;
+  float spec = cos_h > 0.0f ? PowF(cos_h, m->phong_exponent) : 0.0f;
   return (m->diffuse * cos_i + m->specular * spec) * e;
 }
 

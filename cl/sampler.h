@@ -21,14 +21,27 @@ typedef struct SampleKey {
   uint samples;  // Samples per pixel.
   uint strata;   // sqrt(samples) when a perfect square, else 0.
   uint seed;
+  uint prefix;   // Hash of (pixel, sample, seed): each dimension then costs one round.
 } SampleKey;
 
+RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint strata,
+                                  uint seed) {
+  SampleKey k;
+  k.pixel = pixel;
+  k.sample = sample;
+  k.samples = samples;
+  k.strata = strata;
+  k.seed = seed;
+  k.prefix = Hash4(pixel, sample, seed, 0x3c6ef372u);
+  return k;
+}
+
 RT_DEVICE float Random1D(SampleKey k, uint dimension) {
-  return UintToUnitFloat(Hash4(k.pixel, k.sample, dimension, k.seed));
+  return UintToUnitFloat(HashCombine(k.prefix, dimension));
 }
 
 RT_DEVICE float2 Random2D(SampleKey k, uint dimension) {
-  return make_float2(Random1D(k, dimension), Random1D(k, dimension + 0x68bc21ebu));
+  return make_float2(Random1D(k, dimension), Random1D(k, dimension ^ 0x68bc21ebu));
 }
 
 // One point of a jittered n x n pattern per sample, in [0, 1)^2; random when the sample

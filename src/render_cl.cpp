@@ -341,6 +341,8 @@ class ClRendererImpl final : public ClRenderer {
   std::string build_options(int features) const {
     std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
     if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
+    // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).
+    if (const char* extra = std::getenv("RT_CL_OPTIONS")) o += std::string(" ") + extra;
     return o;
   }
   Built& program_for(const std::string& options, ClTimings* timings);

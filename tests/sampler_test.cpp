@@ -13,14 +13,8 @@
 namespace {
 
 SampleKey Key(uint pixel, uint sample, uint samples, uint seed = 0) {
-  SampleKey k;
-  k.pixel = pixel;
-  k.sample = sample;
-  k.samples = samples;
   uint root = static_cast<uint>(std::lround(std::sqrt(static_cast<double>(samples))));
-  k.strata = root * root == samples ? root : 0u;
-  k.seed = seed;
-  return k;
+  return MakeSampleKey(pixel, sample, samples, root * root == samples ? root : 0u, seed);
 }
 
 // Upper critical value of chi-square with `df` degrees of freedom at significance 1e-3
