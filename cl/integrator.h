@@ -10,8 +10,13 @@
 #include "surface.h"
 
 // A ray tree of depth D never holds more than D + 2 pending rays (one sibling per level
-// plus the pair just pushed), which bounds the explicit stack.
+// plus the pair just pushed), which bounds the explicit stack. Only dielectrics branch:
+// a kernel compiled without them needs room for one ray, and less private memory.
+#if defined(__OPENCL_C_VERSION__) && !(RT_KERNEL_FEATURES & RT_FEATURE_DIELECTRIC)
+#define RT_TASK_STACK 2
+#else
 #define RT_TASK_STACK (RT_MAX_DEPTH + 2)
+#endif
 
 typedef struct RayTask {
   Ray ray;
@@ -126,16 +131,25 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
       float eta_t = front ? m->refraction_index : 1.0f;
       float cos_t;
       float fr = FrDielectric(fmax(cos_o, 0.0f), eta_i, eta_t, &cos_t);
-      float3 r = GlossyDirection(sd, m, Reflect(wo, s.n), sk, task.key, primary);
-      stack[sp++] = MakeTask(MakeRay(above, r, RT_INFINITY, ray.time), weight * fr,
-                             front ? Vec3(0.0f) : task.medium, reflect_key, task.depth + 1,
-                             !front);
-      if (fr < 1.0f) {
+      // Either both rays are followed, weighted by Fresnel (the course's splitting), or
+      // one is chosen with probability Fresnel (unbiased, one ray per bounce).
+      int choose = (h->flags & RT_FLAG_FRESNEL_CHOICE) != 0;
+      float pick = choose ? Random1D(sk, HashCombine(task.key, 4u)) : 0.0f;
+      int do_reflect = !choose || pick < fr;
+      int do_refract = fr < 1.0f && (!choose || pick >= fr);
+      if (do_reflect) {
+        float3 r = GlossyDirection(sd, m, Reflect(wo, s.n), sk, task.key, primary);
+        stack[sp++] = MakeTask(MakeRay(above, r, RT_INFINITY, ray.time),
+                               choose ? weight : weight * fr, front ? Vec3(0.0f) : task.medium,
+                               reflect_key, task.depth + 1, !front);
+      }
+      if (do_refract) {
         // Roughness frosts the glass too: the course's images blur what is seen through it.
         float3 t = GlossyDirection(sd, m, Refract(-wo, s.n, eta_i / eta_t, cos_o, cos_t), sk,
                                    HashCombine(task.key, 3u), primary);
         float3 below = OffsetRayOrigin(s.p, -s.ng, eps);
-        stack[sp++] = MakeTask(MakeRay(below, t, RT_INFINITY, ray.time), weight * (1.0f - fr),
+        stack[sp++] = MakeTask(MakeRay(below, t, RT_INFINITY, ray.time),
+                               choose ? weight : weight * (1.0f - fr),
                                front ? m->absorption : Vec3(0.0f), HashCombine(task.key, 2u),
                                task.depth + 1, front);
       }

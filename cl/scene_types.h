@@ -102,6 +102,7 @@ typedef struct TriangleNormals {
 
 #define RT_FLAG_CULL_BACK_FACES 1
 #define RT_FLAG_BACKGROUND_ON_SECONDARY_MISS 2
+#define RT_FLAG_FRESNEL_CHOICE 4  // Dielectrics follow one ray, chosen by Fresnel.
 
 typedef struct SceneHeader {
   Camera camera;

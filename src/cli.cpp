@@ -43,6 +43,15 @@ Sampling:
   --filter box|gaussian  reconstruction filter (default box)
   --filter-sigma S       Gaussian standard deviation in pixels (default 0.5)
   --lens square|disk     lens shape for depth of field (default square, as the course)
+  --time-limit S         stop sampling when the next pass would end after S seconds
+                         (every pixel keeps the same sample count; at least one pass)
+  --noise-target E       stop sampling once the estimated relative error of the image
+                         (root mean variance of the pixel means over the mean) is below E
+  --dielectric split|choose
+                         split (default, as the course): follow both the reflected and
+                         the refracted ray; choose: follow one, picked by Fresnel
+  --fast-math            OpenCL: build with -cl-fast-relaxed-math (faster, less exact;
+                         the CPU reference is always precise)
 
 Geometry:
   --cull-back-faces      primary and reflected rays ignore triangles facing away (the
@@ -68,6 +77,14 @@ long parse_long(const char* opt, const char* value, long lo, long hi) {
   if (!*value || *end || v < lo || v > hi)
     usage_error(std::string(opt) + ": '" + value + "' is not a whole number in [" +
                 std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v;
+}
+
+double parse_positive(const char* opt, const char* value) {
+  char* end = nullptr;
+  double v = std::strtod(value, &end);
+  if (!*value || *end || !(v > 0) || !(v < 1e12))
+    usage_error(std::string(opt) + ": '" + value + "' is not a positive number");
   return v;
 }
 
@@ -143,6 +160,17 @@ CliOptions parse_cli(int argc, char** argv) {
       if (v == "square") o.render.lens = RT_LENS_SQUARE;
       else if (v == "disk") o.render.lens = RT_LENS_DISK;
       else usage_error("--lens: '" + v + "' is not one of square, disk");
+    } else if (a == "--time-limit") {
+      o.render.stop.time_limit_s = parse_positive("--time-limit", value());
+    } else if (a == "--noise-target") {
+      o.render.stop.noise_target = parse_positive("--noise-target", value());
+    } else if (a == "--dielectric") {
+      std::string v = value();
+      if (v == "split") o.render.fresnel_choice = false;
+      else if (v == "choose") o.render.fresnel_choice = true;
+      else usage_error("--dielectric: '" + v + "' is not one of split, choose");
+    } else if (a == "--fast-math") {
+      o.render.fast_math = true;
     } else if (a == "--cull-back-faces") {
       o.render.cull_back_faces = true;
     } else if (a == "--background-on-secondary-miss") {

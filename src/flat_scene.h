@@ -9,6 +9,13 @@
 
 namespace rt {
 
+// When to stop sampling before the camera's sample count is reached. Renders stop only
+// between passes, so every pixel always has the same number of samples.
+struct StopRule {
+  double time_limit_s = 0;  // Wall-clock budget of the render; 0: none.
+  double noise_target = 0;  // Stop once relative_noise() falls below this; 0: never.
+};
+
 struct RenderOptions {
   uint32_t seed = 0;
   int spp = 0;  // Overrides the camera's NumSamples when > 0.
@@ -18,6 +25,9 @@ struct RenderOptions {
   float filter_sigma = 0.5f;
   int lens = RT_LENS_SQUARE;
   bool use_scene_epsilon = true;  // Off: rely on the scale-aware offset alone.
+  bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
+  bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
+  StopRule stop;
   BvhOptions bvh;
 };
 
@@ -37,6 +47,7 @@ struct FlatScene {
   std::vector<PointLight> point_lights;
   std::vector<AreaLight> area_lights;
   FlatStats stats;
+  bool fast_math = false;  // Host-side only: how the OpenCL program is built.
 
   // Pointers into the arrays above, for the CPU reference.
   SceneData view() const;

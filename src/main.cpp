@@ -66,9 +66,9 @@ int run(const rt::CliOptions& opt) {
     rt::RenderResult r;
     rt::ClTimings clt;
     if (cl) {
-      r = cl->render(flat, opt.generic_kernel, progress, &clt);
+      r = cl->render(flat, opt.generic_kernel, progress, &clt, opt.render.stop);
     } else {
-      r = rt::render_cpu(flat, opt.threads, progress);
+      r = rt::render_cpu(flat, opt.threads, progress, opt.render.stop);
     }
     progress.finish();
     if (uint64_t bad = r.nonfinite())
@@ -77,7 +77,7 @@ int run(const rt::CliOptions& opt) {
     std::filesystem::path out = std::filesystem::path(opt.output_dir) / cam.image_name;
     rt::write_png(out.string(), rt::to_8bit(r.width, r.height, r.rgb()));
     if (opt.moments) {
-      rt::MomentInfo info{opt.render.seed, fc.samples,
+      rt::MomentInfo info{opt.render.seed, r.spp,
                           opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",
                           cl ? cl->device_name() : "cpu-reference", opt.scene, c};
       rt::write_moments(rt::moments_path_for(out.string()), rt::moments_from_render(r, info));
@@ -90,7 +90,7 @@ int run(const rt::CliOptions& opt) {
                    out.string().c_str(), cl ? cl->device_name().c_str() : "cpu-reference",
                    load_ms, flat.stats.bvh_build_ms, flat.stats.nodes, flat.stats.triangles,
                    flat.stats.instances, flat.stats.tlas_depth, flat.stats.max_blas_depth,
-                   clt.compile_ms, clt.cache_hit ? " (cache hit)" : "", r.seconds, fc.samples,
+                   clt.compile_ms, clt.cache_hit ? " (cache hit)" : "", r.seconds, r.spp,
                    r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
                    static_cast<unsigned>(flat.header.features));
       if (scene.degenerate_triangles)

@@ -16,6 +16,7 @@ struct RenderResult {
   std::vector<PrimaryInfo> primary;
   double seconds = 0;
   uint64_t samples = 0, rays = 0;
+  int spp = 0;  // Samples per pixel actually taken (fewer than asked when a StopRule hit).
 
   // The reconstructed image: weighted mean radiance per pixel, 3 floats each.
   std::vector<float> rgb() const;
@@ -23,8 +24,14 @@ struct RenderResult {
   uint64_t nonfinite() const;
 };
 
-// Renders the camera set in `flat` on `threads` CPU threads (0: all cores). The image
-// does not depend on the thread count: every pixel is computed by one thread alone.
-RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress);
+// The estimated relative error of an image: the root mean of every pixel's and channel's
+// variance of the mean (var / n), over the image's mean radiance. Zero with < 2 samples.
+double relative_noise(const std::vector<PixelAccum>& accum);
+
+// Renders the camera set in `flat` on `threads` CPU threads (0: all cores), in passes of
+// samples over the whole image. The image does not depend on the thread count: every
+// pixel's samples are taken in order by one thread at a time.
+RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress,
+                        const StopRule& stop = StopRule());
 
 }  // namespace rt

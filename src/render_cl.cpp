@@ -328,7 +328,7 @@ class ClRendererImpl final : public ClRenderer {
   std::string device_name() const override { return name_; }
 
   RenderResult render(const FlatScene& flat, bool generic, Progress& progress,
-                      ClTimings* timings) override;
+                      ClTimings* timings, const StopRule& stop) override;
 
  private:
   struct Built {
@@ -482,7 +482,7 @@ cl::Buffer upload(const cl::Context& ctx, const std::vector<T>& v) {
 size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
 
 RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progress& progress,
-                                    ClTimings* timings) {
+                                    ClTimings* timings, const StopRule& stop) {
   ClTimings local_timings;
   if (!timings) timings = &local_timings;
   const Camera& cam = flat.header.camera;
@@ -524,6 +524,7 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
   }
 
   timings->options = build_options(generic ? RT_FEATURE_ALL : flat.header.features);
+  if (flat.fast_math) timings->options += " -cl-fast-relaxed-math";
   auto compile_start = Clock::now();
   Built& b = program_for(timings->options, timings);
 
@@ -588,7 +589,8 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
     bool measured = false;
     int samples_per_launch = 1;
     auto start = Clock::now();
-    for (int s0 = 0; s0 < spp && pixels > 0;) {
+    int s0 = 0;
+    while (s0 < spp && pixels > 0) {
       double image_cost = 0;  // One sample of the whole image, estimated.
       for (double c : row_cost) image_cost += c;
       bool banded = measured && image_cost > kSplitS;
@@ -623,7 +625,17 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
         row += rows;
       }
       s0 = s1;
+      if (s0 >= spp) break;
+      // Stop rules, checked between slices so every pixel has s0 samples.
+      double t = std::chrono::duration<double>(Clock::now() - start).count();
+      if (stop.time_limit_s > 0 && t + t / s0 * samples_per_launch > stop.time_limit_s) break;
+      if (stop.noise_target > 0 && s0 >= 2) {
+        std::vector<PixelAccum> now(pixels);
+        queue_.enqueueReadBuffer(accum, CL_TRUE, 0, sizeof(PixelAccum) * pixels, now.data());
+        if (relative_noise(now) < stop.noise_target) break;
+      }
     }
+    r.spp = s0;
     r.accum.resize(pixels);
     r.primary.resize(pixels);
     if (pixels > 0) {
@@ -634,7 +646,7 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
   } catch (const cl::Error& e) {
     fail(e);
   }
-  r.samples = static_cast<uint64_t>(pixels) * spp;
+  r.samples = static_cast<uint64_t>(pixels) * r.spp;
   for (const PixelAccum& a : r.accum) r.rays += a.rays;
   return r;
 }

@@ -28,8 +28,9 @@ class ClRenderer {
   // Renders the camera set in `flat`. `generic` compiles the all-features kernel instead
   // of the one specialized to flat.header.features. Throws std::runtime_error (one
   // line) on a build or launch failure; the build log goes to stderr in full.
+  // Sampling stops early, between slices of samples, when `stop` says so.
   virtual RenderResult render(const FlatScene& flat, bool generic, Progress& progress,
-                              ClTimings* timings) = 0;
+                              ClTimings* timings, const StopRule& stop = StopRule()) = 0;
 };
 
 // Prints every platform and device with its index; false when there is none.

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <thread>
 
@@ -24,7 +26,26 @@ uint64_t RenderResult::nonfinite() const {
   return n;
 }
 
-RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress) {
+double relative_noise(const std::vector<PixelAccum>& accum) {
+  double var_of_mean = 0, mean = 0;
+  for (const PixelAccum& a : accum) {
+    double n = a.sum_sq.w;
+    if (n < 2) return 0;
+    const double sum[3] = {a.sum.x, a.sum.y, a.sum.z};
+    const double sq[3] = {a.sum_sq.x, a.sum_sq.y, a.sum_sq.z};
+    for (int c = 0; c < 3; ++c) {
+      double m = sum[c] / a.sum.w;
+      var_of_mean += std::max(0.0, (sq[c] / n - m * m) * n / (n - 1)) / n;
+      mean += m;
+    }
+  }
+  if (mean <= 0) return 0;
+  return std::sqrt(var_of_mean / (3.0 * accum.size())) / (mean / (3.0 * accum.size()));
+}
+
+RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress,
+                        const StopRule& stop) {
+  using Clock = std::chrono::steady_clock;
   const Camera& cam = flat.header.camera;
   RenderResult r;
   r.width = cam.width;
@@ -33,25 +54,42 @@ RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress) 
   r.primary.assign(r.accum.size(), PrimaryInfo{});
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   SceneData sd = flat.view();
-  std::atomic<int> next_row{0};
-  auto start = std::chrono::steady_clock::now();
-  auto worker = [&] {
-    for (int y; (y = next_row++) < cam.height;) {
-      uint64_t rays = 0;
-      for (int x = 0; x < cam.width; ++x) {
-        size_t i = static_cast<size_t>(y) * cam.width + x;
-        AccumulatePixel(&sd, x, y, 0, cam.samples, &r.accum[i], &r.primary[i]);
-        rays += r.accum[i].rays;
+  auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  // Passes grow geometrically (1, 2, 4, ... samples) so a stop rule is checked often at
+  // first and rarely later; without a stop rule one pass takes every sample.
+  bool stopping = stop.time_limit_s > 0 || stop.noise_target > 0;
+  int done = 0;
+  for (int pass = stopping ? 1 : cam.samples; done < cam.samples; pass *= 2) {
+    int s0 = done, s1 = std::min(cam.samples, done + pass);
+    std::atomic<int> next_row{0};
+    auto worker = [&] {
+      for (int y; (y = next_row++) < cam.height;) {
+        uint64_t rays = 0;
+        for (int x = 0; x < cam.width; ++x) {
+          size_t i = static_cast<size_t>(y) * cam.width + x;
+          uint32_t before = r.accum[i].rays;
+          AccumulatePixel(&sd, x, y, s0, s1, &r.accum[i], &r.primary[i]);
+          rays += r.accum[i].rays - before;
+        }
+        progress.add(static_cast<uint64_t>(cam.width) * (s1 - s0), rays);
       }
-      progress.add(static_cast<uint64_t>(cam.width) * cam.samples, rays);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.samples = static_cast<uint64_t>(r.accum.size()) * cam.samples;
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    done = s1;
+    double t = elapsed();
+    // Stop when the next pass (twice this one) would overrun the budget, or when the
+    // image is quiet enough.
+    if (stop.time_limit_s > 0 && done < cam.samples && t * (1.0 + 2.0 * (s1 - s0) / done) > stop.time_limit_s)
+      break;
+    if (stop.noise_target > 0 && done >= 2 && relative_noise(r.accum) < stop.noise_target) break;
+  }
+  r.seconds = elapsed();
+  r.spp = done;
+  r.samples = static_cast<uint64_t>(r.accum.size()) * done;
   for (auto& a : r.accum) r.rays += a.rays;
   return r;
 }
