@@ -1,0 +1,202 @@
+// The speed-accuracy trade of one scene, measured: renders a converged reference (CPU,
+// many samples), then a grid of faster settings on both devices, and prints a table of
+// render time against relative MSE and the Welch verdict against the reference. It also
+// writes the table as TSV for bench/sweep.sh to plot.
+//
+// usage: sweep SCENE.xml [--camera N] [--scale F] [--ref-spp N] [--tsv FILE]
+//
+// Every configuration is validated as it is timed: its error against the reference is in
+// the same row, and a configuration whose Welch test fails is biased, not just noisy.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "family.h"
+#include "flat_scene.h"
+#include "moments.h"
+#include "render.h"
+#include "render_cl.h"
+#include "welch.h"
+
+namespace {
+
+struct Args {
+  std::string scene, tsv;
+  int camera = 0;
+  double scale = 0.25;
+  int ref_spp = 1024;
+};
+
+struct Config {
+  std::string axis, name, device;  // device: "cpu" or "cl"
+  rt::RenderOptions opt;
+  bool generic = false;
+};
+
+struct Row {
+  Config config;
+  int spp = 0;
+  double build_ms = 0, seconds = 0, rel_mse = 0;
+  uint64_t nonfinite = 0;
+  std::string verdict;
+};
+
+// Relative MSE of `img` against `ref` (3 floats per pixel, radiance on the 0-255 scale):
+// mean of (x - r)^2 / (r^2 + 1), the +1 (one level squared) keeping black pixels finite.
+double RelativeMse(const std::vector<float>& img, const std::vector<float>& ref) {
+  double s = 0;
+  for (size_t i = 0; i < ref.size(); ++i) {
+    double d = img[i] - ref[i];
+    s += d * d / (static_cast<double>(ref[i]) * ref[i] + 1.0);
+  }
+  return s / ref.size();
+}
+
+rt::RenderResult Render(const rt::SceneDesc& scene, const Config& c, int camera,
+                        rt::ClRenderer* cl, double* build_ms) {
+  rt::FlatScene flat = rt::flatten_scene(scene, c.opt);
+  *build_ms = flat.stats.bvh_build_ms;
+  rt::set_camera(flat, scene, camera, c.opt);
+  rt::Progress quiet(false, "", 0);
+  if (c.device == "cl") {
+    rt::ClTimings timings;
+    cl->render(flat, c.generic, quiet, &timings);  // Warm-up: compile outside the timing.
+    return cl->render(flat, c.generic, quiet, &timings);
+  }
+  return rt::render_cpu(flat, 0, quiet);
+}
+
+Args Parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    std::string o = argv[i];
+    auto next = [&] {
+      if (i + 1 >= argc) std::exit(2);
+      return std::string(argv[++i]);
+    };
+    if (o == "--camera") a.camera = std::stoi(next());
+    else if (o == "--scale") a.scale = std::stod(next());
+    else if (o == "--ref-spp") a.ref_spp = std::stoi(next());
+    else if (o == "--tsv") a.tsv = next();
+    else if (a.scene.empty() && o[0] != '-') a.scene = o;
+    else {
+      std::fprintf(stderr, "usage: sweep SCENE.xml [--camera N] [--scale F] [--ref-spp N] [--tsv FILE]\n");
+      std::exit(2);
+    }
+  }
+  if (a.scene.empty()) std::exit(2);
+  return a;
+}
+
+std::vector<Config> Grid(bool has_cl, bool dielectric) {
+  std::vector<Config> grid;
+  auto add = [&](std::string axis, std::string name, std::string device, rt::RenderOptions o,
+                 bool generic = false) {
+    if (device == "cl" && !has_cl) return;
+    grid.push_back({axis, name, device, o, generic});
+  };
+  for (std::string dev : {"cpu", "cl"})
+    for (int spp : {1, 4, 16, 64}) {
+      rt::RenderOptions o;
+      o.spp = spp;
+      add("spp", "spp " + std::to_string(spp), dev, o);
+    }
+  rt::RenderOptions base;
+  base.spp = 16;
+  add("kernel", "generic kernel", "cl", base, true);
+  rt::RenderOptions fast = base;
+  fast.fast_math = true;
+  add("math", "-cl-fast-relaxed-math", "cl", fast);
+  for (auto [bins, leaf] : {std::pair{4, 1}, std::pair{8, 2}, std::pair{32, 8}, std::pair{64, 16}}) {
+    rt::RenderOptions o = base;
+    o.bvh.bins = bins;
+    o.bvh.max_leaf = leaf;
+    std::string n = "bvh bins " + std::to_string(bins) + " leaf " + std::to_string(leaf);
+    add("bvh", n, "cpu", o);
+    add("bvh", n, "cl", o);
+  }
+  if (dielectric)
+    for (std::string dev : {"cpu", "cl"})
+      for (int spp : {16, 64}) {
+        rt::RenderOptions o;
+        o.spp = spp;
+        o.fresnel_choice = true;
+        add("dielectric", "choose by Fresnel, spp " + std::to_string(spp), dev, o);
+      }
+  return grid;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Args a = Parse(argc, argv);
+  try {
+    rt::SceneDesc scene = rt::load_scene(a.scene);
+    for (auto& cam : scene.cameras) {
+      cam.width = std::max(1, static_cast<int>(std::lround(cam.width * a.scale)));
+      cam.height = std::max(1, static_cast<int>(std::lround(cam.height * a.scale)));
+    }
+    std::string why;
+    std::unique_ptr<rt::ClRenderer> cl = rt::ClRenderer::create("", true, &why);
+    if (!cl) std::fprintf(stderr, "note: no OpenCL device (%s); CPU rows only\n", why.c_str());
+    bool dielectric = false;
+    for (const Material& m : scene.materials) dielectric |= m.type == RT_MATERIAL_DIELECTRIC;
+
+    Config ref_config{"reference", "reference", "cpu", {}, false};
+    ref_config.opt.spp = a.ref_spp;
+    ref_config.opt.seed = 1000;  // Independent of the candidates' seed 0.
+    double ms;
+    rt::RenderResult ref = Render(scene, ref_config, a.camera, cl.get(), &ms);
+    std::vector<float> ref_rgb = ref.rgb();
+    rt::MomentImage ref_m = rt::moments_from_render(ref, {1000, ref.spp, "box", "cpu", a.scene, 0});
+    std::printf("%s, camera %d at %dx%d; reference: CPU, %d spp, %.1f s (seed 1000)\n\n",
+                a.scene.c_str(), a.camera, ref.width, ref.height, ref.spp, ref.seconds);
+    std::printf("| axis | setting | device | spp | BVH build ms | render s | rel. MSE | "
+                "Welch vs reference | non-finite |\n|---|---|---|---:|---:|---:|---:|---|---:|\n");
+    std::vector<Row> rows;
+    for (const Config& c : Grid(cl != nullptr, dielectric)) {
+      Row row;
+      row.config = c;
+      rt::RenderResult r = Render(scene, c, a.camera, cl.get(), &row.build_ms);
+      row.spp = r.spp;
+      row.seconds = r.seconds;
+      row.rel_mse = RelativeMse(r.rgb(), ref_rgb);
+      row.nonfinite = r.nonfinite();
+      if (r.spp >= 2) {
+        rt::MomentImage m = rt::moments_from_render(r, {0, r.spp, "box", c.device, a.scene, 0});
+        cmp::Family f = cmp::welch_test(ref_m, m, cmp::WelchOptions());
+        cmp::Verdict v = cmp::decide(f, cmp::FamilyOptions());
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%s (%zu/%zu rejected)", v.pass ? "PASS" : "FAIL",
+                      v.rejections, v.tests);
+        row.verdict = buf;
+      } else {
+        row.verdict = "n/a (1 spp: no variance)";
+      }
+      std::printf("| %s | %s | %s | %d | %.1f | %.3f | %.3g | %s | %llu |\n", c.axis.c_str(),
+                  c.name.c_str(), (c.device + (c.generic ? " generic" : "")).c_str(), row.spp,
+                  row.build_ms, row.seconds, row.rel_mse, row.verdict.c_str(),
+                  static_cast<unsigned long long>(row.nonfinite));
+      std::fflush(stdout);
+      rows.push_back(row);
+    }
+    if (!a.tsv.empty()) {
+      std::ofstream t(a.tsv);
+      t << "axis\tsetting\tdevice\tspp\tbuild_ms\tseconds\trel_mse\n";
+      for (const Row& r : rows)
+        t << r.config.axis << '\t' << r.config.name << '\t' << r.config.device
+          << (r.config.generic ? "-generic" : "") << '\t' << r.spp << '\t' << r.build_ms << '\t'
+          << r.seconds << '\t' << r.rel_mse << '\n';
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: %s\n", e.what());
+    return 1;
+  }
+}
