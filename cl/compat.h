@@ -71,8 +71,6 @@ using std::pow;
 using std::sin;
 using std::sqrt;
 using std::tan;
-inline float clamp(float x, float lo, float hi) { return std::fmin(std::fmax(x, lo), hi); }
-inline float mix(float a, float b, float t) { return a + (b - a) * t; }
 
 inline int rt_float_as_int(float f) {
   int i;

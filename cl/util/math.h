@@ -31,14 +31,6 @@ RT_DEVICE float MaxComponent(float3 a) { return fmax(a.x, fmax(a.y, a.z)); }
 
 RT_DEVICE float Component(float3 a, int axis) { return axis == 0 ? a.x : (axis == 1 ? a.y : a.z); }
 
-RT_DEVICE float3 Min3(float3 a, float3 b) {
-  return make_float3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
-}
-
-RT_DEVICE float3 Max3(float3 a, float3 b) {
-  return make_float3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
-}
-
 RT_DEVICE float3 Abs3(float3 a) { return make_float3(fabs(a.x), fabs(a.y), fabs(a.z)); }
 
 RT_DEVICE float3 Exp3(float3 a) { return make_float3(exp(a.x), exp(a.y), exp(a.z)); }
@@ -66,18 +58,6 @@ RT_DEVICE float PowF(float x, float e) {
     return result;
   }
   return pow(x, e);
-}
-
-RT_DEVICE float Clamp(float x, float lo, float hi) { return fmin(fmax(x, lo), hi); }
-
-// A right-handed orthonormal basis around a unit vector n (Duff et al. 2017), used for
-// glossy lobes; it has no branch that could flip between devices.
-RT_DEVICE void CoordinateSystem(float3 n, RT_PRIVATE float3* u, RT_PRIVATE float3* v) {
-  float sign = n.z >= 0.0f ? 1.0f : -1.0f;
-  float a = -1.0f / (sign + n.z);
-  float b = n.x * n.y * a;
-  *u = make_float3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-  *v = make_float3(b, sign + n.y * n.y * a, -n.y);
 }
 
 RT_DEVICE float3 Reflect(float3 wo, float3 n) { return n * (2.0f * Dot(wo, n)) - wo; }
