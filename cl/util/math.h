@@ -60,6 +60,17 @@ RT_DEVICE float PowF(float x, float e) {
   return pow(x, e);
 }
 
+
+// A right-handed orthonormal basis around a unit vector n (Duff et al. 2017), used for
+// glossy lobes; it has no branch that could flip between devices.
+RT_DEVICE void CoordinateSystem(float3 n, RT_PRIVATE float3* u, RT_PRIVATE float3* v) {
+  float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (sign + n.z);
+  float b = n.x * n.y * a;
+  *u = make_float3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  *v = make_float3(b, sign + n.y * n.y * a, -n.y);
+}
+
 RT_DEVICE float3 Reflect(float3 wo, float3 n) { return n * (2.0f * Dot(wo, n)) - wo; }
 
 #endif  // RT_UTIL_MATH_H
