@@ -30,24 +30,24 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, float px, float 
   RT_GLOBAL const Camera* cam = &sd->header->camera;
   float su = (cam->right - cam->left) * (px / (float)cam->width);
   float sv = (cam->top - cam->bottom) * (py / (float)cam->height);
-  float3 corner = cam->position - cam->w * cam->near_distance + cam->u * cam->left +
-                  cam->v * cam->top;
-  float3 film = corner + cam->u * su - cam->v * sv;
-  float3 dir = Normalize(film - cam->position);
+  // Relative to the camera: subtracting its position from an absolute film point would
+  // cancel away the film's detail far from the origin.
+  float3 film =
+      cam->u * (cam->left + su) + cam->v * (cam->top - sv) - cam->w * cam->near_distance;
+  float3 dir = Normalize(film);
   Ray ray = MakeRay(cam->position, dir, RT_INFINITY, time);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {
     // The focal plane lies focus_distance along the gaze; every lens point aims at where
     // the pinhole ray meets it.
     float tfocus = cam->focus_distance / Dot(dir, -cam->w);
-    float3 focus = cam->position + dir * tfocus;
     float2 l = make_float2(lens.x - 0.5f, lens.y - 0.5f);
     if (cam->lens == RT_LENS_DISK) {
       float2 disk = SampleConcentricDisk(lens);
       l = make_float2(0.5f * disk.x, 0.5f * disk.y);
     }
-    float3 origin = cam->position + (cam->u * l.x + cam->v * l.y) * cam->aperture;
-    ray.origin = origin;
-    ray.direction = Normalize(focus - origin);
+    float3 lens_offset = (cam->u * l.x + cam->v * l.y) * cam->aperture;
+    ray.origin = cam->position + lens_offset;
+    ray.direction = Normalize(dir * tfocus - lens_offset);
   }
   return ray;
 }

@@ -107,15 +107,15 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
     // as the course's renderer does: thin sheets such as grass blades are lit from either
     // side. No light reaches the inner side of a dielectric directly.
     if (!dielectric || front)
-      radiance += weight * DirectLighting(sd, m, s.p, s.n, s.ng, wo, ray.time, sk, task.key,
-                                          primary, rays);
+      radiance += weight * DirectLighting(sd, m, s.p, s.scale, s.n, s.ng, wo, ray.time, sk,
+                                          task.key, primary, rays);
     if (!front) {
       s.n = -s.n;
       s.ng = -s.ng;
     }
     if (task.depth >= max_depth) continue;
     uint reflect_key = HashCombine(task.key, 1u);
-    float3 above = OffsetRayOrigin(s.p, s.ng, eps);
+    float3 above = OffsetRayOrigin(s.p, s.ng, eps, s.scale);
     float cos_o = Dot(s.n, wo);
     if (RT_HAS(sd, RT_FEATURE_MIRROR) && m->type == RT_MATERIAL_MIRROR) {
       float3 r = GlossyDirection(sd, m, Reflect(wo, s.n), sk, task.key, primary);
@@ -147,7 +147,7 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
         // Roughness frosts the glass too: the course's images blur what is seen through it.
         float3 t = GlossyDirection(sd, m, Refract(-wo, s.n, eta_i / eta_t, cos_o, cos_t), sk,
                                    HashCombine(task.key, 3u), primary);
-        float3 below = OffsetRayOrigin(s.p, -s.ng, eps);
+        float3 below = OffsetRayOrigin(s.p, -s.ng, eps, s.scale);
         stack[sp++] = MakeTask(MakeRay(below, t, RT_INFINITY, ray.time),
                                choose ? weight : weight * (1.0f - fr),
                                front ? m->absorption : Vec3(0.0f), HashCombine(task.key, 2u),

@@ -18,8 +18,8 @@ RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, float3 origin, float3 s
 // Irradiance-weighted Blinn-Phong from a light point q with irradiance scale `power`
 // (intensity, or radiance * area * light cosine), falling off as 1 / d^2.
 RT_DEVICE float3 ShadeFromPoint(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Material* m,
-                                float3 p, float3 n, float3 ng, float3 wo, float3 q,
-                                float3 power, int two_sided_normal, float3 light_normal,
+                                float3 p, float scale, float3 n, float3 ng, float3 wo,
+                                float3 q, float3 power, int two_sided_normal, float3 light_normal,
                                 float time, RT_PRIVATE uint* rays) {
   float3 to_light = q - p;
   float dist2 = Dot(to_light, to_light);
@@ -28,7 +28,7 @@ RT_DEVICE float3 ShadeFromPoint(RT_PRIVATE const SceneData* sd, RT_GLOBAL const 
   if (Dot(n, wi) <= 0.0f) return Vec3(0.0f);
   float3 e = power * (1.0f / dist2);
   if (two_sided_normal) e = e * fabs(Dot(light_normal, wi));
-  float3 origin = OffsetRayOrigin(p, ng, sd->header->shadow_epsilon);
+  float3 origin = OffsetRayOrigin(p, ng, sd->header->shadow_epsilon, scale);
   if (!Unoccluded(sd, origin, q - origin, time, rays)) return Vec3(0.0f);
   return BlinnPhong(m, n, wo, wi, e);
 }
@@ -36,15 +36,16 @@ RT_DEVICE float3 ShadeFromPoint(RT_PRIVATE const SceneData* sd, RT_GLOBAL const 
 // Ambient plus every light's contribution at a surface point; `key` and `primary`
 // choose the area-light samples (stratified for camera-ray hits).
 RT_DEVICE float3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Material* m,
-                                float3 p, float3 n, float3 ng, float3 wo, float time,
+                                float3 p, float scale, float3 n, float3 ng, float3 wo,
+                                float time,
                                 SampleKey sk, uint key, int primary, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   float3 l = m->ambient * h->ambient_light;
   if (RT_HAS(sd, RT_FEATURE_POINT_LIGHTS)) {
     for (int i = 0; i < h->num_point_lights; ++i) {
       RT_GLOBAL const PointLight* pl = &sd->point_lights[i];
-      l += ShadeFromPoint(sd, m, p, n, ng, wo, pl->position, pl->intensity, 0, Vec3(0.0f), time,
-                          rays);
+      l += ShadeFromPoint(sd, m, p, scale, n, ng, wo, pl->position, pl->intensity, 0, Vec3(0.0f),
+                          time, rays);
     }
   }
   if (RT_HAS(sd, RT_FEATURE_AREA_LIGHTS)) {
@@ -54,8 +55,8 @@ RT_DEVICE float3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_GLOBAL const 
       float2 xi = primary ? Stratified2D(sk, dim) : Random2D(sk, dim);
       float3 q = al->corner + al->edge1 * xi.x + al->edge2 * xi.y;
       // Lights emit from both faces, as the course's reference images show.
-      l += ShadeFromPoint(sd, m, p, n, ng, wo, q, al->radiance * al->area, 1, al->normal, time,
-                          rays);
+      l += ShadeFromPoint(sd, m, p, scale, n, ng, wo, q, al->radiance * al->area, 1, al->normal,
+                          time, rays);
     }
   }
   return l;

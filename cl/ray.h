@@ -29,29 +29,16 @@ RT_DEVICE Ray MakeRay(float3 origin, float3 direction, float tmax, float time) {
 
 RT_DEVICE float3 RayAt(Ray r, float t) { return r.origin + r.direction * t; }
 
-RT_DEVICE float OffsetComponent(float p, float n) {
-  // Moves p by a fixed number of float ulps in the direction of n, so the offset scales
-  // with the magnitude of p (Wächter and Binder, Ray Tracing Gems ch. 6).
-  const float kIntScale = 256.0f;
-  int offset = (int)(kIntScale * n);
-  float moved = rt_int_as_float(rt_float_as_int(p) + (p < 0.0f ? -offset : offset));
-  // Near the origin ulps become tiny, so a small absolute offset takes over.
-  const float kOrigin = 1.0f / 32.0f;
-  const float kFloatScale = 1.0f / 65536.0f;
-  return fabs(p) < kOrigin ? p + kFloatScale * n : moved;
-}
-
 // The origin of a ray leaving surface point p on the side that unit normal n points to:
-// first the scene's own epsilon along n (as the course's files ask), then a scale-aware
-// offset that keeps the ray off the surface even where that epsilon is too small for the
-// magnitude of p.
-RT_DEVICE float3 OffsetRayOrigin(float3 p, float3 n, float scene_epsilon) {
-  // Intersection tests near p round in proportion to its largest coordinate, not to the
-  // coordinates along n (a plane y = 0 far out along x): move 256 ulps of that first.
-  const float kRelative = 256.0f / 8388608.0f;
-  float3 q = p + n * (scene_epsilon + kRelative * MaxComponent(Abs3(p)));
-  return make_float3(OffsetComponent(q.x, n.x), OffsetComponent(q.y, n.y),
-                     OffsetComponent(q.z, n.z));
+// first the scene's own epsilon along n (as the course's files ask), then 8 float ulps of
+// `scale`, the largest coordinate magnitude p was computed from (its triangle's vertices
+// or its sphere, in world space; at least |p|). The rounding error of p, and of the next
+// intersection test near it, is a few ulps of that magnitude whatever the scene's size
+// and wherever it lies, so no absolute floor is needed near the origin.
+RT_DEVICE float3 OffsetRayOrigin(float3 p, float3 n, float scene_epsilon, float scale) {
+  const float kRelative = 8.0f / 8388608.0f;
+  float m = fmax(MaxComponent(Abs3(p)), scale);
+  return p + n * (scene_epsilon + kRelative * m);
 }
 
 #endif  // RT_RAY_H

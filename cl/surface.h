@@ -10,6 +10,7 @@ typedef struct SurfacePoint {
   float3 p;   // World-space position.
   float3 n;   // Unit shading normal (interpolated on smooth meshes).
   float3 ng;  // Unit geometric normal.
+  float scale;  // Largest coordinate magnitude p was computed from (see OffsetRayOrigin).
   int material;
 } SurfacePoint;
 
@@ -23,6 +24,7 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
   SurfacePoint sp;
   sp.material = inst->material;
   float3 p_obj, ng_obj, n_obj;
+  float mag = 1.0f;  // Object-space magnitude: the unit sphere, or the triangle's vertices.
   if (hit.primitive < 0) {
     float3 o = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
     float3 d = ray.direction;
@@ -37,6 +39,8 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
     float b0 = 1.0f - hit.b1 - hit.b2;
     p_obj = tri->v0 * b0 + tri->v1 * hit.b1 + tri->v2 * hit.b2;
+    mag = fmax(MaxComponent(Abs3(tri->v0)),
+               fmax(MaxComponent(Abs3(tri->v1)), MaxComponent(Abs3(tri->v2))));
     ng_obj = Cross(tri->v1 - tri->v0, tri->v2 - tri->v0);
     n_obj = ng_obj;
     if (RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0) {
@@ -44,7 +48,16 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
       n_obj = tn->n0 * b0 + tn->n1 * hit.b1 + tn->n2 * hit.b2;
     }
   }
+  sp.scale = mag;
   if (transformed) {
+    // A bound on the world-space coordinates of points of magnitude `mag`.
+    RT_GLOBAL const float4* o2w = inst->object_to_world;
+    float lin = 0.0f, shift = 0.0f;
+    for (int r = 0; r < 3; ++r) {
+      lin = fmax(lin, fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z));
+      shift = fmax(shift, fabs(o2w[r].w));
+    }
+    sp.scale = lin * mag + shift;
     sp.p = TransformPoint(inst->object_to_world, p_obj);
     sp.ng = Normalize(TransformNormalByInverse(inst->world_to_object, ng_obj));
     sp.n = Normalize(TransformNormalByInverse(inst->world_to_object, n_obj));
@@ -53,8 +66,10 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     sp.ng = Normalize(ng_obj);
     sp.n = Normalize(n_obj);
   }
-  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0)
+  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0) {
     sp.p = sp.p + inst->motion * ray.time;
+    sp.scale = sp.scale + MaxComponent(Abs3(inst->motion)) * ray.time;
+  }
   return sp;
 }
 

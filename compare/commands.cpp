@@ -94,7 +94,7 @@ FamilyOptions family_options(const Args& a) {
 void write_family_maps(const Args& a, const char* prefix, const Family& f, const Verdict& v) {
   if (!a.has("--out-dir")) return;
   std::string dir = a.str("--out-dir");
-  write_map(dir, prefix, "diff", difference_map(f, a.num("--gain", 8, 0, 1e6)));
+  write_map(dir, prefix, "diff", difference_map(f, a.num("--gain", 4, 0, 1e6)));
   write_map(dir, prefix, "pvalue", pvalue_map(f, v));
   write_map(dir, prefix, "mask", mask_map(f));
 }
@@ -157,7 +157,7 @@ int run_paired(int argc, char** argv) {
 }
 
 int run_exact(int argc, char** argv) {
-  Args a(argc, argv, {}, {"--t-tol", "--n-tol", "--max-fraction", "--out-dir", "--gain"});
+  Args a(argc, argv, {}, {"--t-tol", "--n-tol", "--max-fraction", "--out-dir"});
   need_two(a, "exact");
   rt::MomentImage ma = load(a.positional[0]), mb = load(a.positional[1]);
   ExactOptions eo;

@@ -38,28 +38,31 @@ Verdict decide(Family& f, const FamilyOptions& o) {
           }
           break;
         case CellStatus::kEqual: ++v.equal; break;
-        case CellStatus::kDeterministic:
-          if (v.deterministic++ == 0) {
-            v.det_c = c;
-            v.det_diff = cell.diff[c];
-            v.det_x = index < 0 ? -1 : static_cast<int>(index % f.cells_x) * f.tile;
-            v.det_y = index < 0 ? -1 : static_cast<int>(index / f.cells_x) * f.tile;
-          }
-          break;
+        case CellStatus::kDeterministic: ++v.certain; break;
         case CellStatus::kNone: break;
       }
     }
   });
-  v.sidak_level = sidak_level(v.alpha_tests, v.tests);
+  // Zero-variance cells with different means belong to the family too (they may fail it),
+  // but not to Benjamini-Hochberg or the uniformity check: their p is no sampling p-value.
+  v.sidak_level = sidak_level(v.alpha_tests, v.tests + v.certain);
   v.bh_rejections = benjamini_hochberg(all, v.alpha_tests, &v.bh_threshold);
   double cut = o.bh ? v.bh_threshold : v.sidak_level;
-  visit([&](Cell& cell, long) {
+  visit([&](Cell& cell, long index) {
     for (int c = 0; c < 3; ++c) {
       bool tested = cell.status[c] == CellStatus::kTested;
       if (tested && cell.p[c] <= v.sidak_level) ++v.sidak_rejections;
+      bool certain_fail =
+          cell.status[c] == CellStatus::kDeterministic && cell.p[c] <= v.sidak_level;
       cell.rejected[c] = (tested && (o.bh ? v.bh_rejections > 0 && cell.p[c] <= cut
                                           : cell.p[c] <= cut)) ||
-                         cell.status[c] == CellStatus::kDeterministic;
+                         certain_fail;
+      if (certain_fail && v.deterministic++ == 0) {
+        v.det_c = c;
+        v.det_diff = cell.diff[c];
+        v.det_x = index < 0 ? -1 : static_cast<int>(index % f.cells_x) * f.tile;
+        v.det_y = index < 0 ? -1 : static_cast<int>(index / f.cells_x) * f.tile;
+      }
     }
   });
   v.rejections = o.bh ? v.bh_rejections : v.sidak_rejections;
@@ -91,8 +94,9 @@ void print_verdict(const Verdict& v, const FamilyOptions& o, const Family& f) {
               "level %.3g%s), uniformity %.4g\n",
               o.alpha, v.alpha_tests, v.sidak_level, o.bh ? ", verdict by Benjamini-Hochberg" : "",
               v.alpha_uniform);
-  std::printf("  rejections %zu (Sidak %zu, Benjamini-Hochberg %zu), deterministic failures %zu\n",
-              v.rejections, v.sidak_rejections, v.bh_rejections, v.deterministic);
+  std::printf("  rejections %zu (Sidak %zu, Benjamini-Hochberg %zu); zero variance with "
+              "different means %zu, of which deterministic failures %zu\n",
+              v.rejections, v.sidak_rejections, v.bh_rejections, v.certain, v.deterministic);
   if (v.det_c >= 0)
     std::printf("  first deterministic failure at pixel (%d, %d) channel %c: B - A = %.6g\n",
                 v.det_x, v.det_y, "RGB"[v.det_c], v.det_diff);

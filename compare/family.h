@@ -14,7 +14,8 @@ namespace cmp {
 enum class CellStatus : uint8_t {
   kTested,         // p holds a p-value
   kEqual,          // no variance at float resolution and equal means: nothing to test
-  kDeterministic,  // no variance at float resolution but different means: a failure
+  kDeterministic,  // zero variance in both, different means: p compares the difference
+                   // with the float resolution alone; rejected, a deterministic failure
   kNone,           // no data (e.g. a tile with no observations)
 };
 
@@ -47,7 +48,9 @@ struct Family {
 constexpr double kSmallP = 0.05;
 
 struct Verdict {
-  size_t tests = 0, equal = 0, deterministic = 0;
+  size_t tests = 0, equal = 0;
+  size_t certain = 0;        // zero-variance cells with different means (tested on r)
+  size_t deterministic = 0;  // of those, the rejected: deterministic failures
   size_t rejections = 0;     // by the method the verdict uses
   size_t sidak_rejections = 0, bh_rejections = 0;
   double alpha_tests = 0;    // the share of alpha given to the per-cell tests

@@ -22,8 +22,11 @@ welch A B     Welch's unequal-variance t-test per pixel (or per tile) and channe
    H0: in every cell both renders estimate the same expected (unclamped) radiance.
    t = (mean_B - mean_A) / sqrt(var_A/n_A + var_B/n_B + r^2), Welch-Satterthwaite
    degrees of freedom, two-sided p from Student's t; r is the float resolution
-   (--rel-tol * |mean| + --abs-tol). A cell whose standard error is below r has
-   "zero variance": equal means (within 4 r) are not a test, different means are a
+   (--rel-tol * |mean| / n^(1/4) + --abs-tol): rounding in the float sums of x and
+   x^2 leaves even a constant pixel with a standard error of about
+   4e-4 |mean| / n^(1/4). Cells with zero variance in
+   both renders (every sample alike) are no test: equal means (within r) pass and
+   are counted apart, different means are a
    deterministic failure. FAIL when a test is rejected at the Sidak level
    1 - (1 - alpha')^(1/m) over the m tests (or by Benjamini-Hochberg with --bh),
    when there is a deterministic failure, or when the p-values are not uniform:
@@ -71,16 +74,14 @@ Options of welch, paired and diff --moments:
                    H0 it fails with probability at most alpha' too, and it is more
                    powerful when many cells are biased
   --no-uniformity  leave the uniformity check out of the verdict (still printed)
-  --rel-tol R, --abs-tol A   float resolution r = R |mean| + A: of a standard error
-                   for welch and diff (default 5e-4, 1e-6: the variance comes from
-                   float sums of x and x^2, which leave the standard error uncertain
-                   by about 4.2e-4 |mean|), of a difference (ties) for paired
+  --rel-tol R, --abs-tol A   float resolution: welch and diff r = R |mean| / n^(1/4)
+                   + A (default 6e-4, 1e-6), paired ties |B - A| <= R |mean| + A
                    (default 1e-4, 1e-6)
   --allow-weighted  accept Gaussian-filtered moments (welch; approximate)
 
 Images for a person (every subcommand): --out-dir DIR writes, as PNG,
   DIR/<sub>-diff.png    welch/paired: 128 + gain * (B - A) per channel (--gain, default
-                        8; mid-gray is equal); exact: relative distance difference,
+                        4; mid-gray is equal); exact: relative distance difference,
                         white at the tolerance or on a mismatch; diff: |A - B| x 4
   DIR/<sub>-pvalue.png  welch/paired/diff --moments: the cell's smallest p as gray
                         (black p = 1, near white at the rejection level), red

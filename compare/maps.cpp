@@ -46,7 +46,7 @@ rt::Image8 pvalue_map(const Family& f, const Verdict& v) {
     bool rejected = false, deterministic = false;
     for (int c = 0; c < 3; ++c) {
       rejected |= cell.rejected[c];
-      deterministic |= cell.status[c] == CellStatus::kDeterministic;
+      deterministic |= cell.rejected[c] && cell.status[c] == CellStatus::kDeterministic;
       if (cell.status[c] == CellStatus::kTested) min_p = std::min(min_p, cell.p[c]);
     }
     if (deterministic) {

@@ -16,6 +16,7 @@ struct Side {
   double mean_sum[3] = {0, 0, 0};
   double var_sum[3] = {0, 0, 0};  // sum of var_i / n_i
   double dof_den[3] = {0, 0, 0};  // sum of (var_i / n_i)^2 / (n_i - 1)
+  double min_n = kInf;            // fewest samples of a pixel (infinite for a known image)
   int k = 0;
 
   // `var_of_mean` is var / n; `dof` is n - 1 (infinite for a known variance).
@@ -32,19 +33,24 @@ void test_cell(const Side& a, const Side& b, int c, const WelchOptions& o, Cell*
   double k = a.k, k2 = k * k;
   double ma = a.mean_sum[c] / k, mb = b.mean_sum[c] / k;
   double se2 = (a.var_sum[c] + b.var_sum[c]) / k2;
-  double res = o.rel_tol * std::max(std::fabs(ma), std::fabs(mb)) + o.abs_tol;
+  // Rounding in the float sums grows like sqrt(n), so the standard error it fakes shrinks
+  // like n^(-1/4) (see WelchOptions).
+  double n = std::min(a.min_n, b.min_n);
+  double res = o.rel_tol * std::max(std::fabs(ma), std::fabs(mb)) *
+                   (std::isfinite(n) ? std::pow(std::max(n, 1.0), -0.25) : 1.0) +
+               o.abs_tol;
   double d = mb - ma;
   cell->diff[c] = d;
-  if (std::sqrt(se2) <= res) {
-    // Both renders are certain of their value: they agree or they do not.
-    cell->status[c] = std::fabs(d) <= 4 * res ? CellStatus::kEqual : CellStatus::kDeterministic;
-    cell->p[c] = cell->status[c] == CellStatus::kEqual ? 1.0 : 0.0;
+  bool zero = a.var_sum[c] == 0 && b.var_sum[c] == 0;
+  if (zero && std::fabs(d) <= res) {
+    cell->status[c] = CellStatus::kEqual;  // Every sample alike, and the same value.
     return;
   }
   double total = se2 + res * res;
   double den = (a.dof_den[c] + b.dof_den[c]) / (k2 * k2);
   double dof = den > 0 ? total * total / den : kInf;
-  cell->status[c] = CellStatus::kTested;
+  // Without variance the difference is measured against the float resolution alone.
+  cell->status[c] = zero ? CellStatus::kDeterministic : CellStatus::kTested;
   cell->p[c] = student_t_two_sided(d / std::sqrt(total), dof);
 }
 
@@ -71,6 +77,7 @@ Family run(int w, int h, const WelchOptions& o, AddA add_a, AddB add_b) {
 
 void add_moments(const rt::MomentImage& m, size_t i, Side* s, bool clamp) {
   double n = m.count[i];
+  s->min_n = std::min(s->min_n, n);
   for (int c = 0; c < 3; ++c) {
     double mean = m.mean[i * 3 + c];
     if (clamp) mean = std::clamp(mean, 0.0, 255.0);

@@ -916,7 +916,8 @@ void CheckOffset(const OffsetCase& c, float scene_epsilon, std::mt19937& rng, in
     float3 p = v0 * b0 + v1 * h.b1 + v2 * h.b2;
     float3 ng = Normalize(Cross(v1 - v0, v2 - v0));
     if (Dot(ng, d) > 0) ng = -ng;
-    float3 q = OffsetRayOrigin(p, ng, scene_epsilon);
+    float scale = std::max({MaxComponent(Abs3(v0)), MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))});
+    float3 q = OffsetRayOrigin(p, ng, scene_epsilon, scale);
     double along = dot(D3(q) - D3(p), D3(ng));
     double above = dot(D3(q) - D3(v0), pn);  // Signed distance to the true plane.
     bool ok = along > 0 && above > 0;
@@ -956,10 +957,9 @@ TEST(GeometryOffset, OffsetOriginLeavesThePlaneAtEveryScale) {
   EXPECT_EQ(failures, 0);
 }
 
-TEST(GeometryOffset, EachComponentMovesTowardsTheNormalByAScaleAwareAmount) {
-  // Componentwise contract of the offset (scene epsilon 0): every coordinate moves in the
-  // direction of its normal component, by at least (int)(256 |n_i|) ulps of itself, or by
-  // |n_i| / 65536 where it is within 1/32 of zero and ulps are too small.
+TEST(GeometryOffset, MovesAlongTheNormalByEightUlpsOfTheLargerOfPointAndScale) {
+  // Contract (scene epsilon 0): q = p + n * 8 * 2^-23 * max(max|p_i|, scale), up to float
+  // rounding: half an ulp of each coordinate of q, plus a few ulps of the step itself.
   std::mt19937 rng(23);
   std::uniform_int_distribution<int> pick(0, 9);
   std::normal_distribution<float> g;
@@ -969,19 +969,21 @@ TEST(GeometryOffset, EachComponentMovesTowardsTheNormalByAScaleAwareAmount) {
     for (float& x : c) x = mags[pick(rng) % 7] * (pick(rng) < 5 ? -1.0f : 1.0f) * (1 + 0.1f * g(rng));
     float3 n = Normalize(make_float3(g(rng), g(rng), g(rng)));
     float3 p = make_float3(c[0], c[1], c[2]);
-    float3 q = OffsetRayOrigin(p, n, 0.0f);
+    float scale = mags[pick(rng) % 7];
+    float3 q = OffsetRayOrigin(p, n, 0.0f, scale);
+    double m = std::max({std::fabs(double(p.x)), std::fabs(double(p.y)), std::fabs(double(p.z)),
+                         double(scale)});
+    double step = 8.0 / 8388608.0 * m;
     const float pc[3] = {p.x, p.y, p.z}, qc[3] = {q.x, q.y, q.z}, nc[3] = {n.x, n.y, n.z};
     for (int k = 0; k < 3; ++k) {
-      double moved = double(qc[k]) - pc[k];
-      int ulps = static_cast<int>(256.0f * std::fabs(nc[k]));
-      auto ulp_of = [](float x) { return double(std::nextafter(std::fabs(x), 1e38f)) - std::fabs(x); };
-      // Near zero the float addition p + n / 65536 rounds once: allow one ulp of the sum.
-      double least = std::fabs(pc[k]) < 1.0f / 32
-                         ? std::fabs(nc[k]) / 65536 - ulp_of(std::fabs(pc[k]) + 1.0f / 65536)
-                         : ulps * ulp_of(pc[k]);
-      if (least <= 0) continue;  // Normal component too small to move this coordinate.
-      EXPECT_GT(moved * nc[k], 0) << "p " << Str(p) << " n " << Str(n) << " axis " << k;
-      EXPECT_GE(std::fabs(moved), least) << "p " << Str(p) << " n " << Str(n) << " axis " << k;
+      double expected = double(pc[k]) + double(nc[k]) * step;
+      double half_ulp = 0.5 * (double(std::nextafter(std::fabs(qc[k]), 1e38f)) - std::fabs(qc[k]));
+      double step_rounding = 4.0 / 16777216.0 * std::fabs(double(nc[k]) * step);
+      EXPECT_LE(std::fabs(qc[k] - expected), half_ulp * 1.0001 + step_rounding + 1e-45)
+          << "p " << Str(p) << " n " << Str(n) << " scale " << scale << " axis " << k;
+    }
+    if (m > 0) {
+      EXPECT_GT(dot(D3(q) - D3(p), D3(n)), 0) << "p " << Str(p) << " n " << Str(n);
     }
   }
 }

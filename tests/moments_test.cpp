@@ -134,8 +134,8 @@ TEST_F(CompareCli, RaytracerWritesMomentsBesideThePng) {
 
 TEST_F(CompareCli, WelchPassesTwoSeedsAndWritesItsImages) {
   std::string out, maps = (dir_ / "maps").string();
-  EXPECT_EQ(RunCommand(Compare("welch " + File("1") + " " + File("2") + " --out-dir " + maps), &out), 0)
-      << out;
+  std::string cmd = Compare("welch " + File("1") + " " + File("2") + " --out-dir " + maps);
+  EXPECT_EQ(RunCommand(cmd, &out), 0) << out;
   EXPECT_NE(out.find("verdict: PASS"), std::string::npos) << out;
   EXPECT_NE(out.find("smallest p"), std::string::npos);
   EXPECT_NE(out.find("Sidak per-test level"), std::string::npos);
