@@ -58,8 +58,8 @@ double RelativeMse(const std::vector<float>& img, const std::vector<float>& ref)
   return s / ref.size();
 }
 
-rt::RenderResult Render(const rt::SceneDesc& scene, const Config& c, int camera,
-                        rt::ClRenderer* cl, double* build_ms) {
+rt::RenderResult Render(const rt::SceneDesc& scene, const Config& c, int camera, rt::ClRenderer* cl,
+                        double* build_ms) {
   rt::FlatScene flat = rt::flatten_scene(scene, c.opt);
   *build_ms = flat.stats.bvh_build_ms;
   rt::set_camera(flat, scene, camera, c.opt);
@@ -80,13 +80,19 @@ Args Parse(int argc, char** argv) {
       if (i + 1 >= argc) std::exit(2);
       return std::string(argv[++i]);
     };
-    if (o == "--camera") a.camera = std::stoi(next());
-    else if (o == "--scale") a.scale = std::stod(next());
-    else if (o == "--ref-spp") a.ref_spp = std::stoi(next());
-    else if (o == "--tsv") a.tsv = next();
-    else if (a.scene.empty() && o[0] != '-') a.scene = o;
+    if (o == "--camera")
+      a.camera = std::stoi(next());
+    else if (o == "--scale")
+      a.scale = std::stod(next());
+    else if (o == "--ref-spp")
+      a.ref_spp = std::stoi(next());
+    else if (o == "--tsv")
+      a.tsv = next();
+    else if (a.scene.empty() && o[0] != '-')
+      a.scene = o;
     else {
-      std::fprintf(stderr, "usage: sweep SCENE.xml [--camera N] [--scale F] [--ref-spp N] [--tsv FILE]\n");
+      std::fprintf(stderr,
+                   "usage: sweep SCENE.xml [--camera N] [--scale F] [--ref-spp N] [--tsv FILE]\n");
       std::exit(2);
     }
   }
@@ -113,7 +119,8 @@ std::vector<Config> Grid(bool has_cl, bool dielectric) {
   rt::RenderOptions fast = base;
   fast.fast_math = true;
   add("math", "-cl-fast-relaxed-math", "cl", fast);
-  for (auto [bins, leaf] : {std::pair{4, 1}, std::pair{8, 2}, std::pair{32, 8}, std::pair{64, 16}}) {
+  for (auto [bins, leaf] :
+       {std::pair{4, 1}, std::pair{8, 2}, std::pair{32, 8}, std::pair{64, 16}}) {
     rt::RenderOptions o = base;
     o.bvh.bins = bins;
     o.bvh.max_leaf = leaf;
@@ -157,8 +164,9 @@ int main(int argc, char** argv) {
     rt::MomentImage ref_m = rt::moments_from_render(ref, {1000, ref.spp, "box", "cpu", a.scene, 0});
     std::printf("%s, camera %d at %dx%d; reference: CPU, %d spp, %.1f s (seed 1000)\n\n",
                 a.scene.c_str(), a.camera, ref.width, ref.height, ref.spp, ref.seconds);
-    std::printf("| axis | setting | device | spp | BVH build ms | render s | rel. MSE | "
-                "Welch vs reference | non-finite |\n|---|---|---|---:|---:|---:|---:|---|---:|\n");
+    std::printf(
+        "| axis | setting | device | spp | BVH build ms | render s | rel. MSE | "
+        "Welch vs reference | non-finite |\n|---|---|---|---:|---:|---:|---:|---|---:|\n");
     std::vector<Row> rows;
     for (const Config& c : Grid(cl != nullptr, dielectric)) {
       Row row;

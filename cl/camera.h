@@ -32,8 +32,7 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, float px, float 
   float sv = (cam->top - cam->bottom) * (py / (float)cam->height);
   // Relative to the camera: subtracting its position from an absolute film point would
   // cancel away the film's detail far from the origin.
-  float3 film =
-      cam->u * (cam->left + su) + cam->v * (cam->top - sv) - cam->w * cam->near_distance;
+  float3 film = cam->u * (cam->left + su) + cam->v * (cam->top - sv) - cam->w * cam->near_distance;
   float3 dir = Normalize(film);
   Ray ray = MakeRay(cam->position, dir, RT_INFINITY, time);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {

@@ -24,7 +24,7 @@ typedef struct RayTask {
   float3 medium;  // Absorption coefficient of the medium the ray travels in (0: air).
   uint key;       // Identifies the ray in the tree; keys its random dimensions.
   int depth;
-  int inside;     // 1 while the ray travels inside a dielectric.
+  int inside;  // 1 while the ray travels inside a dielectric.
 } RayTask;
 
 // Deterministic facts about a pixel's first camera ray, for exact comparisons.
@@ -35,8 +35,7 @@ typedef struct PrimaryInfo {
   float3 normal;
 } PrimaryInfo;
 
-RT_DEVICE RayTask MakeTask(Ray ray, float3 weight, float3 medium, uint key, int depth,
-                           int inside) {
+RT_DEVICE RayTask MakeTask(Ray ray, float3 weight, float3 medium, uint key, int depth, int inside) {
   RayTask task;
   task.ray = ray;
   task.weight = weight;
@@ -139,19 +138,18 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
       int do_refract = fr < 1.0f && (!choose || pick >= fr);
       if (do_reflect) {
         float3 r = GlossyDirection(sd, m, Reflect(wo, s.n), sk, task.key, primary);
-        stack[sp++] = MakeTask(MakeRay(above, r, RT_INFINITY, ray.time),
-                               choose ? weight : weight * fr, front ? Vec3(0.0f) : task.medium,
-                               reflect_key, task.depth + 1, !front);
+        stack[sp++] =
+            MakeTask(MakeRay(above, r, RT_INFINITY, ray.time), choose ? weight : weight * fr,
+                     front ? Vec3(0.0f) : task.medium, reflect_key, task.depth + 1, !front);
       }
       if (do_refract) {
         // Roughness frosts the glass too: the course's images blur what is seen through it.
         float3 t = GlossyDirection(sd, m, Refract(-wo, s.n, eta_i / eta_t, cos_o, cos_t), sk,
                                    HashCombine(task.key, 3u), primary);
         float3 below = OffsetRayOrigin(s.p, -s.ng, eps, s.scale);
-        stack[sp++] = MakeTask(MakeRay(below, t, RT_INFINITY, ray.time),
-                               choose ? weight : weight * (1.0f - fr),
-                               front ? m->absorption : Vec3(0.0f), HashCombine(task.key, 2u),
-                               task.depth + 1, front);
+        stack[sp++] = MakeTask(
+            MakeRay(below, t, RT_INFINITY, ray.time), choose ? weight : weight * (1.0f - fr),
+            front ? m->absorption : Vec3(0.0f), HashCombine(task.key, 2u), task.depth + 1, front);
       }
     }
   }

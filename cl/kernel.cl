@@ -5,9 +5,9 @@
 __kernel void render(__global const SceneHeader* header, __global const Material* materials,
                      __global const Instance* instances, __global const BvhNode* nodes,
                      __global const Triangle* triangles, __global const TriangleNormals* normals,
-                     __global const PointLight* point_lights,
-                     __global const AreaLight* area_lights, int row_begin, int sample_begin,
-                     int sample_end, __global PixelAccum* accum, __global PrimaryInfo* primary) {
+                     __global const PointLight* point_lights, __global const AreaLight* area_lights,
+                     int row_begin, int sample_begin, int sample_end, __global PixelAccum* accum,
+                     __global PrimaryInfo* primary) {
   int x = (int)get_global_id(0);
   int y = row_begin + (int)get_global_id(1);
   if (x >= header->camera.width || y >= header->camera.height) return;

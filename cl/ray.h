@@ -8,14 +8,14 @@ typedef struct Ray {
   float3 origin;
   float3 direction;  // Not necessarily unit length: t is shared by world and object space.
   float tmax;
-  float time;        // Shutter time in [0, 1] for motion blur.
+  float time;  // Shutter time in [0, 1] for motion blur.
 } Ray;
 
 typedef struct Hit {
   float t;
-  int instance;  // -1 when nothing was hit.
-  int primitive; // Triangle index, or -1 for a sphere.
-  float b1, b2;  // Barycentric coordinates of v1 and v2 on a triangle.
+  int instance;   // -1 when nothing was hit.
+  int primitive;  // Triangle index, or -1 for a sphere.
+  float b1, b2;   // Barycentric coordinates of v1 and v2 on a triangle.
 } Hit;
 
 RT_DEVICE Ray MakeRay(float3 origin, float3 direction, float tmax, float time) {

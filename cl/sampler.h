@@ -21,11 +21,10 @@ typedef struct SampleKey {
   uint samples;  // Samples per pixel.
   uint strata;   // sqrt(samples) when a perfect square, else 0.
   uint seed;
-  uint prefix;   // Hash of (pixel, sample, seed): each dimension then costs one round.
+  uint prefix;  // Hash of (pixel, sample, seed): each dimension then costs one round.
 } SampleKey;
 
-RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint strata,
-                                  uint seed) {
+RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint strata, uint seed) {
   SampleKey k;
   k.pixel = pixel;
   k.sample = sample;

@@ -57,8 +57,8 @@ typedef struct Camera {
   float focus_distance;  // Distance to the focal plane along the gaze.
   int lens;
   int width, height;
-  int samples;         // Samples per pixel.
-  int strata;          // sqrt(samples) when it is a perfect square, else 0 (no strata).
+  int samples;  // Samples per pixel.
+  int strata;   // sqrt(samples) when it is a perfect square, else 0 (no strata).
 } Camera;
 
 #define RT_INSTANCE_MESH 0

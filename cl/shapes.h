@@ -37,9 +37,9 @@ RT_DEVICE TriangleRay MakeTriangleRay(float3 origin, float3 dir) {
 // Edge functions that are exactly zero count as inside for both triangles sharing the
 // edge, so a ray through a shared edge or vertex never slips through a closed mesh.
 // Back faces (det < 0: the ray sees the vertices clockwise) are skipped when cull is set.
-RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, float3 p0, float3 p1,
-                                float3 p2, float tmax, int cull, RT_PRIVATE float* t,
-                                RT_PRIVATE float* b1, RT_PRIVATE float* b2) {
+RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, float3 p0, float3 p1, float3 p2,
+                                float tmax, int cull, RT_PRIVATE float* t, RT_PRIVATE float* b1,
+                                RT_PRIVATE float* b2) {
   float3 a = Permute3(p0 - tr->origin, tr->kx, tr->ky, tr->kz);
   float3 b = Permute3(p1 - tr->origin, tr->kx, tr->ky, tr->kz);
   float3 c = Permute3(p2 - tr->origin, tr->kx, tr->ky, tr->kz);

@@ -7,9 +7,9 @@
 #include "transform.h"
 
 typedef struct SurfacePoint {
-  float3 p;   // World-space position.
-  float3 n;   // Unit shading normal (interpolated on smooth meshes).
-  float3 ng;  // Unit geometric normal.
+  float3 p;     // World-space position.
+  float3 n;     // Unit shading normal (interpolated on smooth meshes).
+  float3 ng;    // Unit geometric normal.
   float scale;  // Largest coordinate magnitude p was computed from (see OffsetRayOrigin).
   int material;
 } SurfacePoint;

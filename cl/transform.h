@@ -7,8 +7,7 @@
 RT_DEVICE float RowDot(float4 row, float3 p) { return row.x * p.x + row.y * p.y + row.z * p.z; }
 
 RT_DEVICE float3 TransformPoint(RT_GLOBAL const float4* m, float3 p) {
-  return make_float3(RowDot(m[0], p) + m[0].w, RowDot(m[1], p) + m[1].w,
-                     RowDot(m[2], p) + m[2].w);
+  return make_float3(RowDot(m[0], p) + m[0].w, RowDot(m[1], p) + m[1].w, RowDot(m[2], p) + m[2].w);
 }
 
 RT_DEVICE float3 TransformVector(RT_GLOBAL const float4* m, float3 v) {

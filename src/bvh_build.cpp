@@ -37,14 +37,17 @@ constexpr int kMedianDepth = RT_BVH_MAX_DEPTH - 28;
 
 class Builder {
  public:
-  Builder(const std::vector<Aabb>& boxes, const BvhOptions& options, int max_leaf,
-          int prim_offset, std::vector<BvhNode>& nodes, std::vector<int>& order)
-      : boxes_(boxes), opt_(options), max_leaf_(max_leaf), offset_(prim_offset),
-        nodes_(nodes), order_(order) {
+  Builder(const std::vector<Aabb>& boxes, const BvhOptions& options, int max_leaf, int prim_offset,
+          std::vector<BvhNode>& nodes, std::vector<int>& order)
+      : boxes_(boxes),
+        opt_(options),
+        max_leaf_(max_leaf),
+        offset_(prim_offset),
+        nodes_(nodes),
+        order_(order) {
     centroids_.resize(boxes.size() * 3);
     for (size_t i = 0; i < boxes.size(); ++i)
-      for (int k = 0; k < 3; ++k)
-        centroids_[i * 3 + k] = 0.5f * (boxes[i].lo[k] + boxes[i].hi[k]);
+      for (int k = 0; k < 3; ++k) centroids_[i * 3 + k] = 0.5f * (boxes[i].lo[k] + boxes[i].hi[k]);
   }
 
   BvhBuildResult run() {

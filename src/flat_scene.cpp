@@ -28,8 +28,8 @@ void set_rows(float4 rows[3], const Mat4& m) {
 Aabb transformed_box(const Aabb& b, const Mat4& m, Vec3d motion) {
   Aabb out;
   for (int c = 0; c < 8; ++c) {
-    Vec3d p = m.point({(c & 1) ? b.hi[0] : b.lo[0], (c & 2) ? b.hi[1] : b.lo[1],
-                       (c & 4) ? b.hi[2] : b.lo[2]});
+    Vec3d p = m.point(
+        {(c & 1) ? b.hi[0] : b.lo[0], (c & 2) ? b.hi[1] : b.lo[1], (c & 4) ? b.hi[2] : b.lo[2]});
     for (int t = 0; t < 2; ++t) {
       Vec3d q = p + motion * t;
       // Widen by a relative ulp so float rounding of the transform cannot shrink the box.
@@ -178,8 +178,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   return f;
 }
 
-void set_camera(FlatScene& flat, const SceneDesc& scene, int camera,
-                const RenderOptions& options) {
+void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options) {
   const CameraDesc& c = scene.cameras[camera];
   Camera& cam = flat.header.camera;
   Vec3d w = normalize(c.gaze) * -1.0;

@@ -66,8 +66,8 @@ ImageDiff diff_images(const Image8& a, const Image8& b, int threshold) {
   const double samples = static_cast<double>(pixels) * 3;
   diff.mae = static_cast<double>(sum_abs) / samples;
   diff.rmse = std::sqrt(static_cast<double>(sum_sq) / samples);
-  diff.psnr = diff.rmse == 0 ? std::numeric_limits<double>::infinity()
-                             : 20 * std::log10(255 / diff.rmse);
+  diff.psnr =
+      diff.rmse == 0 ? std::numeric_limits<double>::infinity() : 20 * std::log10(255 / diff.rmse);
   diff.frac_over = static_cast<double>(over) / static_cast<double>(pixels);
   diff.max_abs = max_abs;
   diff.frac_identical = static_cast<double>(identical) / static_cast<double>(pixels);
@@ -76,8 +76,8 @@ ImageDiff diff_images(const Image8& a, const Image8& b, int threshold) {
 
 Image8 downsample(const Image8& img, int k) {
   check_buffer(img, "downsample");
-  if (k < 1) throw std::invalid_argument("downsample: factor must be >= 1, got " +
-                                         std::to_string(k));
+  if (k < 1)
+    throw std::invalid_argument("downsample: factor must be >= 1, got " + std::to_string(k));
   Image8 out;
   out.width = img.width / k;
   out.height = img.height / k;
@@ -102,8 +102,7 @@ Image8 downsample(const Image8& img, int k) {
 Image8 difference_image(const Image8& a, const Image8& b, double gain) {
   check_same_size(a, b, "difference_image");
   if (!(gain >= 0)) {
-    throw std::invalid_argument("difference_image: gain must be >= 0, got " +
-                                std::to_string(gain));
+    throw std::invalid_argument("difference_image: gain must be >= 0, got " + std::to_string(gain));
   }
   Image8 out;
   out.width = a.width;

@@ -71,12 +71,11 @@ void append_to_vector(png_structp png, png_bytep data, size_t length) {
 
 void flush_nothing(png_structp) {}
 
-void encode_body(png_structp png, png_infop info, const Image8& image,
-                 std::vector<uint8_t>* out) {
+void encode_body(png_structp png, png_infop info, const Image8& image, std::vector<uint8_t>* out) {
   png_set_write_fn(png, out, append_to_vector, flush_nothing);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
-               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   const size_t stride = static_cast<size_t>(image.width) * 3;
   for (int y = 0; y < image.height; ++y) png_write_row(png, image.rgb.data() + y * stride);
@@ -231,9 +230,9 @@ uint8_t float_to_byte(float v) {
 Image8 to_8bit(int width, int height, const std::vector<float>& rgb) {
   if (width < 0 || height < 0 ||
       rgb.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 3) {
-    throw std::invalid_argument("to_8bit: " + std::to_string(width) + "x" +
-                                std::to_string(height) + " image needs " +
-                                "width*height*3 floats, got " + std::to_string(rgb.size()));
+    throw std::invalid_argument("to_8bit: " + std::to_string(width) + "x" + std::to_string(height) +
+                                " image needs " + "width*height*3 floats, got " +
+                                std::to_string(rgb.size()));
   }
   Image8 image;
   image.width = width;

@@ -31,8 +31,7 @@ void Progress::finish() {
 }
 
 void Progress::draw(bool final) {
-  double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   uint64_t done = samples_.load();
   double frac = total_ ? static_cast<double>(done) / total_ : 1.0;
   double left = frac > 0 ? elapsed * (1 - frac) / frac : 0;

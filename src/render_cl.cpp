@@ -327,8 +327,8 @@ class ClRendererImpl final : public ClRenderer {
 
   std::string device_name() const override { return name_; }
 
-  RenderResult render(const FlatScene& flat, bool generic, Progress& progress,
-                      ClTimings* timings, const StopRule& stop) override;
+  RenderResult render(const FlatScene& flat, bool generic, Progress& progress, ClTimings* timings,
+                      const StopRule& stop) override;
 
  private:
   struct Built {

@@ -13,7 +13,7 @@ namespace rt {
 struct ClTimings {
   double compile_ms = 0;  // Building the program (or loading it from the cache).
   bool cache_hit = false;
-  std::string options;    // The build options used (feature defines included).
+  std::string options;  // The build options used (feature defines included).
 };
 
 class ClRenderer {

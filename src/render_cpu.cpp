@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "render.h"
@@ -83,7 +83,8 @@ RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress,
     double t = elapsed();
     // Stop when the next pass (twice this one) would overrun the budget, or when the
     // image is quiet enough.
-    if (stop.time_limit_s > 0 && done < cam.samples && t * (1.0 + 2.0 * (s1 - s0) / done) > stop.time_limit_s)
+    if (stop.time_limit_s > 0 && done < cam.samples &&
+        t * (1.0 + 2.0 * (s1 - s0) / done) > stop.time_limit_s)
       break;
     if (stop.noise_target > 0 && done >= 2 && relative_noise(r.accum) < stop.noise_target) break;
   }

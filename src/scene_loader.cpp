@@ -125,8 +125,7 @@ class Loader {
   std::map<std::string, int> instance_objects_;  // MeshInstance id -> object index.
 };
 
-std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count,
-                                    size_t max_count) const {
+std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count, size_t max_count) const {
   const std::string text = text_of(e);
   std::vector<double> out;
   const char* p = text.c_str();
@@ -144,13 +143,15 @@ std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count,
     // Overflow gives inf; underflow (1e-400) is a representable tiny value, not an error.
     if (!std::isfinite(v)) fail(e, "not a finite number: '" + shorten(token) + "'");
     // The devices work in float: a larger value would turn into inf there.
-    if (std::fabs(v) > FLT_MAX) fail(e, "'" + shorten(token) + "' is too large (beyond float range)");
+    if (std::fabs(v) > FLT_MAX)
+      fail(e, "'" + shorten(token) + "' is too large (beyond float range)");
     out.push_back(v);
   }
   if (out.size() < min_count || out.size() > max_count) {
     std::ostringstream s;
     s << "expected " << min_count;
-    if (max_count != min_count) s << (max_count == SIZE_MAX ? " or more" : " to " + std::to_string(max_count));
+    if (max_count != min_count)
+      s << (max_count == SIZE_MAX ? " or more" : " to " + std::to_string(max_count));
     s << (max_count == 1 ? " number" : " numbers") << ", got " << out.size() << " ('"
       << shorten(text) << "')";
     fail(e, s.str());
@@ -222,7 +223,8 @@ void Loader::read_cameras(const XMLElement* scene) {
       cam.left = -cam.right;
     }
     if (cam.left == cam.right || cam.bottom == cam.top) {
-      if (const XMLElement* np = child(c, "NearPlane", false)) fail_value(np, "is an empty image plane");
+      if (const XMLElement* np = child(c, "NearPlane", false))
+        fail_value(np, "is an empty image plane");
       fail(c, "empty image plane");
     }
     if (length(cross(cam.up, cam.gaze)) == 0) fail_value(up, "is parallel to the gaze direction");
@@ -239,7 +241,8 @@ void Loader::read_cameras(const XMLElement* scene) {
     if (const XMLElement* ns = child(c, "NumSamples", false)) {
       double n = number(ns);
       double root = std::round(std::sqrt(n));
-      if (n < 1 || n != std::floor(n) || n > 1e6) fail_value(ns, "must be a whole number in [1, 1e6]");
+      if (n < 1 || n != std::floor(n) || n > 1e6)
+        fail_value(ns, "must be a whole number in [1, 1e6]");
       if (root * root != n)
         fail(ns, "'" + std::to_string(static_cast<long>(n)) +
                      "' is not a perfect square (jittered sampling needs n x n strata)");
@@ -331,7 +334,8 @@ void Loader::read_materials(const XMLElement* scene) {
     m.absorption_index = static_cast<float>(child_number(e, "AbsorptionIndex", 0));
     m.roughness = static_cast<float>(child_number(e, "Roughness", 0));
     if (m.roughness < 0) fail_value(child(e, "Roughness", true), "must not be negative");
-    if (!(m.refraction_index > 0)) fail_value(child(e, "RefractionIndex", true), "must be positive");
+    if (!(m.refraction_index > 0))
+      fail_value(child(e, "RefractionIndex", true), "must be positive");
     std::string type = e->Attribute("type") ? e->Attribute("type") : "";
     Vec3d transparency = child_vec3(e, "Transparency", {});
     if (type == "mirror") {
@@ -342,7 +346,8 @@ void Loader::read_materials(const XMLElement* scene) {
       m.type = RT_MATERIAL_DIELECTRIC;
     } else if (old_dialect && type.empty() && length(transparency) > 0) {
       m.type = RT_MATERIAL_DIELECTRIC;
-    } else if (old_dialect && type.empty() && (m.mirror.x > 0 || m.mirror.y > 0 || m.mirror.z > 0)) {
+    } else if (old_dialect && type.empty() &&
+               (m.mirror.x > 0 || m.mirror.y > 0 || m.mirror.z > 0)) {
       m.type = RT_MATERIAL_MIRROR;
     } else if (!type.empty()) {
       warn(e, "unknown material type '" + type + "', treated as plain");
@@ -364,7 +369,8 @@ void Loader::read_transformations(const XMLElement* scene) {
       transforms_[std::string("t") + id] = Mat4::translation(vec3(e));
     } else if (name == "Scaling") {
       Vec3d s = vec3(e);
-      if (s.x == 0 || s.y == 0 || s.z == 0) fail_value(e, "has a zero scale: the transform is singular");
+      if (s.x == 0 || s.y == 0 || s.z == 0)
+        fail_value(e, "has a zero scale: the transform is singular");
       transforms_[std::string("s") + id] = Mat4::scaling(s);
     } else if (name == "Rotation") {
       auto v = numbers(e, 4, 4);
@@ -456,7 +462,8 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
     mesh.triangles = pm.triangles;
   } else {
     auto idx = numbers(faces, 3, SIZE_MAX);
-    if (idx.size() % 3 != 0) fail(faces, std::to_string(idx.size()) + " indices is not a multiple of 3");
+    if (idx.size() % 3 != 0)
+      fail(faces, std::to_string(idx.size()) + " indices is not a multiple of 3");
     int offset = 0;
     if (faces->Attribute("vertexOffset") &&
         faces->QueryIntAttribute("vertexOffset", &offset) != tinyxml2::XML_SUCCESS)
@@ -512,7 +519,8 @@ void Loader::read_objects(const XMLElement* scene) {
       if (it == mesh_objects_.end()) {
         it = instance_objects_.find(base_id);
         if (it == instance_objects_.end())
-          fail(e, std::string("baseMeshId '") + base_id + "' names no earlier Mesh or MeshInstance");
+          fail(e,
+               std::string("baseMeshId '") + base_id + "' names no earlier Mesh or MeshInstance");
       }
       const ObjectDesc& base = scene_.objects[it->second];
       o.mesh = base.mesh;
@@ -533,8 +541,8 @@ void Loader::read_objects(const XMLElement* scene) {
       const XMLElement* r = child(e, "Radius", true);
       double radius = number(r);
       if (!(radius > 0)) fail_value(r, "must be positive");
-      o.transform = transform_of(e) * Mat4::translation(centre) *
-                    Mat4::scaling({radius, radius, radius});
+      o.transform =
+          transform_of(e) * Mat4::translation(centre) * Mat4::scaling({radius, radius, radius});
       o.motion = motion_of(e);
     } else {
       warn(e, "unknown object type, ignored");
@@ -554,9 +562,11 @@ SceneDesc Loader::load() {
   errno = 0;
   tinyxml2::XMLError err = doc.LoadFile(file_.c_str());
   const int open_errno = errno;
-  if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND || err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
+  if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND ||
+      err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
     throw input_error(file_, "file",
-                      std::string("cannot open") + (open_errno ? std::string(": ") + std::strerror(open_errno) : ""));
+                      std::string("cannot open") +
+                          (open_errno ? std::string(": ") + std::strerror(open_errno) : ""));
   // A directory opens but cannot be read; tinyxml2 would call either "malformed at line 0".
   std::error_code ec;
   if (err == tinyxml2::XML_ERROR_FILE_READ_ERROR || std::filesystem::is_directory(file_, ec))
@@ -570,21 +580,32 @@ SceneDesc Loader::load() {
     std::string detail = doc.ErrorStr() ? doc.ErrorStr() : "", where;
     size_t at = detail.find("XMLElement name=");
     if (at != std::string::npos) where = " in <" + shorten(detail.substr(at + 16)) + ">";
-    throw input_error(file_, "XML", std::string("malformed at line ") + std::to_string(doc.ErrorLineNum()) +
-                                        where + ": " + doc.ErrorName());
+    throw input_error(file_, "XML",
+                      std::string("malformed at line ") + std::to_string(doc.ErrorLineNum()) +
+                          where + ": " + doc.ErrorName());
   }
   const XMLElement* scene = doc.FirstChildElement("Scene");
   if (!scene) throw input_error(file_, "XML", "no <Scene> root element");
   scene_.file = file_;
-  static const std::set<std::string> known = {
-      "BackgroundColor", "ShadowRayEpsilon", "IntersectionTestEpsilon", "MaxRecursionDepth",
-      "Camera", "Cameras", "Lights", "Materials", "Transformations", "VertexData", "TexCoordData",
-      "Textures", "Objects"};
+  static const std::set<std::string> known = {"BackgroundColor",
+                                              "ShadowRayEpsilon",
+                                              "IntersectionTestEpsilon",
+                                              "MaxRecursionDepth",
+                                              "Camera",
+                                              "Cameras",
+                                              "Lights",
+                                              "Materials",
+                                              "Transformations",
+                                              "VertexData",
+                                              "TexCoordData",
+                                              "Textures",
+                                              "Objects"};
   for (auto* e = scene->FirstChildElement(); e; e = e->NextSiblingElement())
     if (!known.count(e->Name())) warn(e, "unknown element, ignored");
   scene_.background = child_vec3(scene, "BackgroundColor", {});
   scene_.shadow_epsilon = child_number(scene, "ShadowRayEpsilon", 1e-3);
-  if (scene_.shadow_epsilon < 0) fail_value(child(scene, "ShadowRayEpsilon", true), "must not be negative");
+  if (scene_.shadow_epsilon < 0)
+    fail_value(child(scene, "ShadowRayEpsilon", true), "must not be negative");
   scene_.intersection_epsilon = child_number(scene, "IntersectionTestEpsilon", 1e-6);
   if (scene_.intersection_epsilon < 0)
     fail_value(child(scene, "IntersectionTestEpsilon", true), "must not be negative");
@@ -602,7 +623,8 @@ SceneDesc Loader::load() {
   read_objects(scene);
   if (scene_.degenerate_triangles > 0)
     scene_.warnings.push_back(file_ + ": Objects: skipped " +
-                              std::to_string(scene_.degenerate_triangles) + " degenerate triangles");
+                              std::to_string(scene_.degenerate_triangles) +
+                              " degenerate triangles");
   return std::move(scene_);
 }
 

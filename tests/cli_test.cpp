@@ -101,8 +101,7 @@ class CliBadInput : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("rt_cli_" + std::to_string(getpid()) + "_" + info->name());
+    dir_ = fs::temp_directory_path() / ("rt_cli_" + std::to_string(getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "out");
     out_ = (dir_ / "out").string();
@@ -119,8 +118,8 @@ class CliBadInput : public ::testing::Test {
   // to files (so neither is a terminal), under a 10 s timeout.
   Outcome run(const std::string& args, const std::string& env = "") {
     fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
-    std::string cmd = env + " timeout 10 " + quote(RT_RAYTRACER_EXE) + " " + args + " <" + quote("/dev/null") +
-                      " >" + quote(o.string()) + " 2>" + quote(e.string());
+    std::string cmd = env + " timeout 10 " + quote(RT_RAYTRACER_EXE) + " " + args + " <" +
+                      quote("/dev/null") + " >" + quote(o.string()) + " 2>" + quote(e.string());
     auto t0 = std::chrono::steady_clock::now();
     int status = std::system(cmd.c_str());
     Outcome r;
@@ -169,7 +168,8 @@ TEST_F(CliBadInput, BadValueOneLineNamesElementAndValue) {
   Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
-  EXPECT_NE(r.err.find(scene + ": Cameras > Camera id=1 > Gaze: '0 0 0'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(scene + ": Cameras > Camera id=1 > Gaze: '0 0 0'"), std::string::npos)
+      << r.err;
   EXPECT_TRUE(output_files().empty());
 }
 
@@ -205,7 +205,8 @@ TEST_F(CliBadInput, UnwritableOutputLeavesNoTempFile) {
 }
 
 TEST_F(CliBadInput, ImageNameInMissingSubdirectory) {
-  std::string scene = write("s.xml", replaced(kScene, "<ImageName>simple.png", "<ImageName>sub/x.png"));
+  std::string scene =
+      write("s.xml", replaced(kScene, "<ImageName>simple.png", "<ImageName>sub/x.png"));
   Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
@@ -235,8 +236,9 @@ TEST_F(CliBadInput, NonNumericSppIsUsageError) {
 
 TEST_F(CliBadInput, MissingOpenClDevice) {
   std::string scene = write("s.xml", kScene);
-  Outcome r = run(quote(scene) + " --device cl --cl-device no-such-device-xyzzy --quiet --output-dir " +
-              quote(out_));
+  Outcome r =
+      run(quote(scene) + " --device cl --cl-device no-such-device-xyzzy --quiet --output-dir " +
+          quote(out_));
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find("OpenCL"), std::string::npos) << r.err;
@@ -308,9 +310,11 @@ TEST_F(CliBadInput, HugePlyFaceCountDoesNotHang) {
         "property float y\nproperty float z\nelement face 2147483647\n"
         "property list uchar int vertex_indices\nend_header\n" +
             std::string(3 * 12, '\0') + std::string("\x03\0\0\0\0\1\0\0\0\2\0\0\0", 13));
-  std::string scene = write(
-      "s.xml", replaced(kScene, "<Faces>\n                3 1 2\n                1 3 4\n            </Faces>",
-                        "<Faces plyFile=\"m.ply\"/>"));
+  std::string scene =
+      write("s.xml",
+            replaced(kScene,
+                     "<Faces>\n                3 1 2\n                1 3 4\n            </Faces>",
+                     "<Faces plyFile=\"m.ply\"/>"));
   Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);  // 124 would mean `timeout` had to kill it
   EXPECT_LT(r.seconds, 5);

@@ -204,7 +204,7 @@ TEST(GeometryTriangle, DistanceMustLieStrictlyBetweenZeroAndTmax) {
   auto v = AxisTriangle(2, -2.0f);
   const float3 o = make_float3(-0.5f, -0.25f, 0.0f);
   const float3 down = make_float3(0, 0, -1), up = make_float3(0, 0, 1);
-  EXPECT_EQ(HitTriangle(o, up, v[0], v[1], v[2], kInf, 0).hit, 0);  // Behind the origin.
+  EXPECT_EQ(HitTriangle(o, up, v[0], v[1], v[2], kInf, 0).hit, 0);    // Behind the origin.
   EXPECT_EQ(HitTriangle(o, down, v[0], v[1], v[2], 2.0f, 0).hit, 0);  // t == tmax.
   EXPECT_EQ(HitTriangle(o, down, v[0], v[1], v[2], 1.0f, 0).hit, 0);
   TriHit h = HitTriangle(o, down, v[0], v[1], v[2], std::nextafter(2.0f, 3.0f), 0);
@@ -242,8 +242,8 @@ TEST(GeometryTriangle, CullSkipsOnlyBackFacesForAxisRays) {
   for (int k = 0; k < 3; ++k)
     for (float plane : {-2.0f, 2.0f})
       for (float sign : {-1.0f, 1.0f}) {
-        SCOPED_TRACE("axis " + std::to_string(k) + " plane " + std::to_string(plane) +
-                     " sign " + std::to_string(sign));
+        SCOPED_TRACE("axis " + std::to_string(k) + " plane " + std::to_string(plane) + " sign " +
+                     std::to_string(sign));
         // The normal is +e_k; the ray origin sits on the side of the normal when the plane
         // is at -2 and the ray comes from 0, or when it is at +2 and the ray comes from 4.
         auto v = AxisTriangle(k, plane);
@@ -399,7 +399,9 @@ TestMesh Icosahedron() {
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
       for (int k = j + 1; k < n; ++k) {
-        auto edge = [&](int a, int b) { return std::fabs(dot(v[a] - v[b], v[a] - v[b]) - 4) < 1e-9; };
+        auto edge = [&](int a, int b) {
+          return std::fabs(dot(v[a] - v[b], v[a] - v[b]) - 4) < 1e-9;
+        };
         if (edge(i, j) && edge(j, k) && edge(i, k)) m.f.push_back({i, j, k});
       }
   return m;
@@ -729,7 +731,6 @@ TEST(GeometrySphere, FarAwayUnitSphereStaysAccurateInRadiusUnits) {
   }
 }
 
-
 double ReferenceSphere(Vec3d o, Vec3d d, Vec3d c, double r) {
   Vec3d oc = o - c;
   double a = dot(d, d);
@@ -916,7 +917,8 @@ void CheckOffset(const OffsetCase& c, float scene_epsilon, std::mt19937& rng, in
     float3 p = v0 * b0 + v1 * h.b1 + v2 * h.b2;
     float3 ng = Normalize(Cross(v1 - v0, v2 - v0));
     if (Dot(ng, d) > 0) ng = -ng;
-    float scale = std::max({MaxComponent(Abs3(v0)), MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))});
+    float scale =
+        std::max({MaxComponent(Abs3(v0)), MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))});
     float3 q = OffsetRayOrigin(p, ng, scene_epsilon, scale);
     double along = dot(D3(q) - D3(p), D3(ng));
     double above = dot(D3(q) - D3(v0), pn);  // Signed distance to the true plane.
@@ -934,9 +936,8 @@ void CheckOffset(const OffsetCase& c, float scene_epsilon, std::mt19937& rng, in
     for (float3 w : out) rehit += HitTriangle(q, w, v0, v1, v2, kInf, 0).hit;
     if ((!ok || rehit) && ++*failures <= 10)
       ADD_FAILURE() << "magnitude " << c.magnitude << " normal " << Str(F3(n)) << " eps "
-                    << scene_epsilon << ": p " << Str(p) << " q " << Str(q)
-                    << " dot(q-p,n) " << along << " distance to plane " << above
-                    << " re-hits " << rehit;
+                    << scene_epsilon << ": p " << Str(p) << " q " << Str(q) << " dot(q-p,n) "
+                    << along << " distance to plane " << above << " re-hits " << rehit;
   }
 }
 
@@ -945,8 +946,8 @@ TEST(GeometryOffset, OffsetOriginLeavesThePlaneAtEveryScale) {
   // the scene epsilon. Centre (1, 0, 0) puts points whose coordinate along an axis-aligned
   // normal is ~0 far from the origin: the re-intersection test rounds at the scale of |p|,
   // so the offset must too, not only at the scale of the coordinate along n.
-  std::vector<Vec3d> normals = {{0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {1, 1, 1}, {-0.3, 0.8, 0.5},
-                                {0.9, -0.1, 0.2}, {0.05, 0.05, -1}};
+  std::vector<Vec3d> normals = {{0, 0, 1},        {0, -1, 0},       {1, 0, 0},       {1, 1, 1},
+                                {-0.3, 0.8, 0.5}, {0.9, -0.1, 0.2}, {0.05, 0.05, -1}};
   std::vector<Vec3d> centres = {{0.6, -0.7, 0.4}, {-0.5, 0.5, 0.7}, {1, 0, 0}};
   std::mt19937 rng(21);
   int failures = 0;
@@ -966,13 +967,14 @@ TEST(GeometryOffset, MovesAlongTheNormalByEightUlpsOfTheLargerOfPointAndScale) {
   const float mags[] = {0.0f, 1e-6f, 0.01f, 0.5f, 3.0f, 1e4f, 1e8f};
   for (int i = 0; i < 2000; ++i) {
     float c[3];
-    for (float& x : c) x = mags[pick(rng) % 7] * (pick(rng) < 5 ? -1.0f : 1.0f) * (1 + 0.1f * g(rng));
+    for (float& x : c)
+      x = mags[pick(rng) % 7] * (pick(rng) < 5 ? -1.0f : 1.0f) * (1 + 0.1f * g(rng));
     float3 n = Normalize(make_float3(g(rng), g(rng), g(rng)));
     float3 p = make_float3(c[0], c[1], c[2]);
     float scale = mags[pick(rng) % 7];
     float3 q = OffsetRayOrigin(p, n, 0.0f, scale);
-    double m = std::max({std::fabs(double(p.x)), std::fabs(double(p.y)), std::fabs(double(p.z)),
-                         double(scale)});
+    double m = std::max(
+        {std::fabs(double(p.x)), std::fabs(double(p.y)), std::fabs(double(p.z)), double(scale)});
     double step = 8.0 / 8388608.0 * m;
     const float pc[3] = {p.x, p.y, p.z}, qc[3] = {q.x, q.y, q.z}, nc[3] = {n.x, n.y, n.z};
     for (int k = 0; k < 3; ++k) {
@@ -1178,8 +1180,8 @@ struct TestRay {
 
 // Compares closest hits (exactly: both call IntersectTriangle on the same TriangleRay),
 // shadow-ray answers and culled closest hits. Returns the number of mismatching rays.
-int CompareWithBruteForce(const Soup& soup, const FlatScene& scene, const std::vector<TestRay>& rays,
-                          const std::vector<BruteHit>& closest,
+int CompareWithBruteForce(const Soup& soup, const FlatScene& scene,
+                          const std::vector<TestRay>& rays, const std::vector<BruteHit>& closest,
                           const std::vector<BruteHit>& culled) {
   int bad = 0;
   for (size_t i = 0; i < rays.size(); ++i) {
@@ -1200,10 +1202,10 @@ int CompareWithBruteForce(const Soup& soup, const FlatScene& scene, const std::v
     ok = ok && chit == (culled[i].index >= 0);
     if (ok && chit) ok = ch.t == culled[i].t;
     if (!ok && ++bad <= 5)
-      ADD_FAILURE() << "ray " << i << " o " << Str(r.o) << " d " << Str(r.d) << " tmax "
-                    << r.tmax << ": scene " << (hit ? h.t : -1.0f) << " brute "
-                    << (ref.index >= 0 ? ref.t : -1.0f) << " shadow " << shadow
-                    << " culled scene " << (chit ? ch.t : -1.0f) << " brute "
+      ADD_FAILURE() << "ray " << i << " o " << Str(r.o) << " d " << Str(r.d) << " tmax " << r.tmax
+                    << ": scene " << (hit ? h.t : -1.0f) << " brute "
+                    << (ref.index >= 0 ? ref.t : -1.0f) << " shadow " << shadow << " culled scene "
+                    << (chit ? ch.t : -1.0f) << " brute "
                     << (culled[i].index >= 0 ? culled[i].t : -1.0f);
   }
   return bad;

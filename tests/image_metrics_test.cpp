@@ -87,10 +87,10 @@ TEST(DiffImages, RejectsInconsistentBuffer) {
 TEST(Downsample, FourByFourToTwoByTwo) {
   // Channel 0 holds r, channel 1 is constant 7, channel 2 holds b: one 1 in the top-left block
   // (mean 0.25 -> 0) and two in the top-right block (mean 0.5 -> 1).
-  const uint8_t r[16] = {0, 4, 10, 10,    //
-                         8, 4, 10, 11,    //
-                         255, 255, 1, 2,  //
-                         255, 254, 3, 4};
+  const uint8_t r[16] = {0,   4,   10, 10,  //
+                         8,   4,   10, 11,  //
+                         255, 255, 1,  2,   //
+                         255, 254, 3,  4};
   const uint8_t b[16] = {1, 0, 1, 1,  //
                          0, 0, 0, 0,  //
                          0, 0, 0, 0,  //

@@ -224,7 +224,8 @@ TEST_F(LoaderErrors, NonFiniteOrNonNumericInVector) {
 TEST_F(LoaderErrors, BeyondFloatRange) {
   // Finite in double, inf once the devices convert to float.
   expect_error({{"-0.5 -0.5 -2", "-0.5 1e39 -2"}}, {"VertexData", "'1e39'", "float"});
-  expect_error({{"<Radius>0.3</Radius>", "<Radius>-4e38</Radius>"}}, {"Sphere id=1 > Radius", "'-4e38'"});
+  expect_error({{"<Radius>0.3</Radius>", "<Radius>-4e38</Radius>"}},
+               {"Sphere id=1 > Radius", "'-4e38'"});
 }
 
 TEST_F(LoaderErrors, SingularComposedTransform) {
@@ -258,8 +259,7 @@ TEST_F(LoaderErrors, ZeroUp) {
 }
 
 TEST_F(LoaderErrors, UpParallelToGaze) {
-  expect_error({{"<Up>0 1 0</Up>", "<Up>0 0 2</Up>"}},
-               {"Camera id=1 > Up", "'0 0 2'", "parallel"});
+  expect_error({{"<Up>0 1 0</Up>", "<Up>0 0 2</Up>"}}, {"Camera id=1 > Up", "'0 0 2'", "parallel"});
 }
 
 TEST_F(LoaderErrors, LookAtGazePointAtPosition) {
@@ -274,10 +274,12 @@ TEST_F(LoaderErrors, GazePointWithoutLookAt) {
 }
 
 TEST_F(LoaderErrors, BadResolutionNearDistanceAndSamples) {
-  expect_error({{"<ImageResolution>40 20</ImageResolution>", "<ImageResolution>40 0</ImageResolution>"}},
-               {"Camera id=1 > ImageResolution", "'40 0'"});
-  expect_error({{"<ImageResolution>40 20</ImageResolution>", "<ImageResolution>40.5 20</ImageResolution>"}},
-               {"Camera id=1 > ImageResolution", "'40.5 20'"});
+  expect_error(
+      {{"<ImageResolution>40 20</ImageResolution>", "<ImageResolution>40 0</ImageResolution>"}},
+      {"Camera id=1 > ImageResolution", "'40 0'"});
+  expect_error(
+      {{"<ImageResolution>40 20</ImageResolution>", "<ImageResolution>40.5 20</ImageResolution>"}},
+      {"Camera id=1 > ImageResolution", "'40.5 20'"});
   expect_error({{"<NearDistance>1</NearDistance>", "<NearDistance>-1</NearDistance>"}},
                {"Camera id=1 > NearDistance", "'-1'"});
   expect_error({{"<ImageName>simple.png</ImageName>", "<ImageName>   </ImageName>"}},
@@ -318,8 +320,9 @@ TEST_F(LoaderErrors, NegativeLightValues) {
                {"PointLight id=1 > Intensity", "'1000 -1 1000'", "negative"});
   expect_error({{"</Lights>", replace_all(kAreaLight, "10 10 10", "10 10 -0.5")}},
                {"AreaLight id=1 > Radiance", "'10 10 -0.5'", "negative"});
-  expect_error({{"<AmbientLight>25 25 25</AmbientLight>", "<AmbientLight>-25 25 25</AmbientLight>"}},
-               {"AmbientLight", "'-25 25 25'", "negative"});
+  expect_error(
+      {{"<AmbientLight>25 25 25</AmbientLight>", "<AmbientLight>-25 25 25</AmbientLight>"}},
+      {"AmbientLight", "'-25 25 25'", "negative"});
 }
 
 // ---- References ----
@@ -328,10 +331,12 @@ TEST_F(LoaderErrors, MaterialIdThatDoesNotExist) {
   expect_error({{"<Material>1</Material>\n            <Faces>", "<Material>7</Material><Faces>"}},
                {"Mesh id=1 > Material", "'7'"});
   // Whitespace around the id is trimmed, both in the message and the lookup.
-  expect_error({{"<Material>1</Material>\n            <Center>", "<Material>\n  7  </Material><Center>"}},
-               {"Sphere id=1 > Material", "'7'"});
-  expect_error({{"<Material>1</Material>\n            <Indices>", "<Material></Material><Indices>"}},
-               {"Triangle id=1 > Material", "''"});
+  expect_error(
+      {{"<Material>1</Material>\n            <Center>", "<Material>\n  7  </Material><Center>"}},
+      {"Sphere id=1 > Material", "'7'"});
+  expect_error(
+      {{"<Material>1</Material>\n            <Indices>", "<Material></Material><Indices>"}},
+      {"Triangle id=1 > Material", "''"});
 }
 
 TEST_F(LoaderErrors, FaceIndexOutOfRange) {
@@ -355,33 +360,38 @@ TEST_F(LoaderErrors, SphereCenterOutOfRange) {
 TEST_F(LoaderErrors, NonIntegerIndex) {
   expect_error({{"1 3 4", "1 3.5 4"}}, {"Mesh id=1 > Faces", "'3.5'", "not a whole number"});
   expect_error({{"1 3 4", "1 x 4"}}, {"Mesh id=1 > Faces", "'x'"});
-  expect_error({{"<Center>8</Center>", "<Center>2.5</Center>"}},
-               {"Sphere id=1 > Center", "'2.5'"});
+  expect_error({{"<Center>8</Center>", "<Center>2.5</Center>"}}, {"Sphere id=1 > Center", "'2.5'"});
   expect_error({{"<Faces>", "<Faces vertexOffset=\"one\">"}},
                {"Mesh id=1 > Faces", "vertexOffset", "'one'"});
 }
 
 TEST_F(LoaderErrors, UnknownTransformationReference) {
-  expect_error({{"<Objects>", "<Transformations><Translation id=\"1\">1 0 0</Translation>"
-                              "</Transformations><Objects>"},
+  expect_error({{"<Objects>",
+                 "<Transformations><Translation id=\"1\">1 0 0</Translation>"
+                 "</Transformations><Objects>"},
                 {"<Material>1</Material>\n            <Faces>",
                  "<Material>1</Material><Transformations>t1 t9</Transformations><Faces>"}},
                {"Mesh id=1 > Transformations", "'t9'"});
 }
 
 TEST_F(LoaderErrors, SingularTransform) {
-  expect_error({{"<Objects>", "<Transformations><Scaling id=\"1\">0 1 1</Scaling>"
-                              "</Transformations><Objects>"}},
+  expect_error({{"<Objects>",
+                 "<Transformations><Scaling id=\"1\">0 1 1</Scaling>"
+                 "</Transformations><Objects>"}},
                {"Scaling id=1", "'0 1 1'", "singular"});
-  expect_error({{"<Objects>", "<Transformations><Rotation id=\"1\">45 0 0 0</Rotation>"
-                              "</Transformations><Objects>"}},
+  expect_error({{"<Objects>",
+                 "<Transformations><Rotation id=\"1\">45 0 0 0</Rotation>"
+                 "</Transformations><Objects>"}},
                {"Rotation id=1", "'45 0 0 0'", "axis"});
-  expect_error({{"<Objects>", "<Transformations><Composite id=\"1\">0 0 0 0  0 1 0 0  0 0 1 0  "
-                              "0 0 0 1</Composite></Transformations><Objects>"},
-                {"<Radius>0.3</Radius>", "<Radius>0.3</Radius><Transformations>c1</Transformations>"}},
-               {"Sphere id=1 > Transformations", "'c1'", "singular"});
-  expect_error({{"<Objects>", "<Transformations><Composite id=\"1\">1 0 0 0  0 1 0 0  0 0 1 0  "
-                              "0 0 1 0</Composite></Transformations><Objects>"}},
+  expect_error(
+      {{"<Objects>",
+        "<Transformations><Composite id=\"1\">0 0 0 0  0 1 0 0  0 0 1 0  "
+        "0 0 0 1</Composite></Transformations><Objects>"},
+       {"<Radius>0.3</Radius>", "<Radius>0.3</Radius><Transformations>c1</Transformations>"}},
+      {"Sphere id=1 > Transformations", "'c1'", "singular"});
+  expect_error({{"<Objects>",
+                 "<Transformations><Composite id=\"1\">1 0 0 0  0 1 0 0  0 0 1 0  "
+                 "0 0 1 0</Composite></Transformations><Objects>"}},
                {"Composite id=1", "'0 0 1 0'"});
 }
 
@@ -393,8 +403,9 @@ TEST_F(LoaderErrors, BaseMeshIdThatDoesNotExist) {
                {"MeshInstance id=2", "''"});
   expect_error({{"</Objects>", "<MeshInstance id=\"2\"/></Objects>"}},
                {"MeshInstance id=2", "baseMeshId"});
-  expect_error({{"</Objects>", "<MeshInstance id=\"2\" baseMeshId=\"1\" resetTransform=\"yes\"/>"
-                               "</Objects>"}},
+  expect_error({{"</Objects>",
+                 "<MeshInstance id=\"2\" baseMeshId=\"1\" resetTransform=\"yes\"/>"
+                 "</Objects>"}},
                {"MeshInstance id=2", "resetTransform", "'yes'"});
 }
 
@@ -415,9 +426,10 @@ TEST_F(LoaderErrors, MaxRecursionDepth) {
 
 // ---- PLY files ----
 
-const char* kPlyHeader = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
-                         "property float y\nproperty float z\nelement face 1\n"
-                         "property list uchar int vertex_indices\nend_header\n";
+const char* kPlyHeader =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+    "property float y\nproperty float z\nelement face 1\n"
+    "property list uchar int vertex_indices\nend_header\n";
 
 std::string ply_mesh(const std::string& file) {
   return "<Mesh id=\"1\">\n            <Material>1</Material>\n            <Faces plyFile=\"" +
@@ -446,7 +458,8 @@ TEST_F(LoaderErrors, TruncatedPly) {
   std::string path = write("scene.xml", edit(kBase, {{kMeshBlock, ply_mesh("m.ply")}}));
   expect_error(path, {"Mesh id=1 > Faces", (dir_ / "m.ply").string(), "vertex"});
   // A binary body cut short.
-  std::string bin = replace_all(kPlyHeader, "ascii", "binary_little_endian") + std::string(20, '\0');
+  std::string bin =
+      replace_all(kPlyHeader, "ascii", "binary_little_endian") + std::string(20, '\0');
   write("b.ply", bin);
   path = write("scene2.xml", edit(kBase, {{kMeshBlock, ply_mesh("b.ply")}}));
   expect_error(path, {"Mesh id=1 > Faces", (dir_ / "b.ply").string()});
@@ -490,8 +503,8 @@ TEST_F(LoaderAccepts, UnknownElementWarnsAndLoads) {
 
 TEST_F(LoaderAccepts, DegenerateTrianglesSkippedAndCounted) {
   // 1 1 2 repeats a vertex; 1 2 and (-0.5, -1.5, -2) are collinear with 1 and 2.
-  SceneDesc s = load_scene(scene({{"-0.875 1 -2", "-0.5 -1.5 -2"},
-                                  {"1 3 4", "1 3 4\n 1 1 2\n 1 2 8\n 2 2 2"}}));
+  SceneDesc s = load_scene(
+      scene({{"-0.875 1 -2", "-0.5 -1.5 -2"}, {"1 3 4", "1 3 4\n 1 1 2\n 1 2 8\n 2 2 2"}}));
   EXPECT_EQ(s.degenerate_triangles, 3);
   ASSERT_EQ(s.meshes.size(), 2u);
   EXPECT_EQ(s.meshes[0].triangles.size(), 2u);
@@ -500,9 +513,10 @@ TEST_F(LoaderAccepts, DegenerateTrianglesSkippedAndCounted) {
 }
 
 TEST_F(LoaderAccepts, CrlfLineEndings) {
-  std::string path = write("scene.xml", replace_all(edit(kBase, {{"<ImageName>simple.png",
-                                                                  "<ImageName>\nsimple.png\n"}}),
-                                                    "\n", "\r\n"));
+  std::string path =
+      write("scene.xml",
+            replace_all(edit(kBase, {{"<ImageName>simple.png", "<ImageName>\nsimple.png\n"}}), "\n",
+                        "\r\n"));
   SceneDesc s = load_scene(path);
   ASSERT_EQ(s.cameras.size(), 1u);
   EXPECT_EQ(s.cameras[0].image_name, "simple.png");
@@ -532,25 +546,27 @@ TEST_F(LoaderAccepts, FiveNumberNearPlane) {
 }
 
 TEST_F(LoaderAccepts, Comments) {
-  SceneDesc s = load_scene(scene({{"<Scene>", "<!-- top --><Scene><!-- inside -->"},
-                                  {"<Gaze>0 0 -1</Gaze>", "<Gaze><!-- ahead -->0 0 <!-- z -->-1</Gaze>"},
-                                  {"<Radius>0.3</Radius>", "<Radius>0.3</Radius> <!-- r -->"}}));
+  SceneDesc s =
+      load_scene(scene({{"<Scene>", "<!-- top --><Scene><!-- inside -->"},
+                        {"<Gaze>0 0 -1</Gaze>", "<Gaze><!-- ahead -->0 0 <!-- z -->-1</Gaze>"},
+                        {"<Radius>0.3</Radius>", "<Radius>0.3</Radius> <!-- r -->"}}));
   EXPECT_EQ(s.cameras.at(0).gaze.z, -1);
   EXPECT_EQ(s.objects.size(), 3u);
 }
 
 TEST_F(LoaderAccepts, MaterialIdWithWhitespace) {
-  SceneDesc s = load_scene(scene({{"<Center>8</Center>", "<Center> 8\n</Center>"},
-                                  {"<Material>1</Material>\n            <Center>",
-                                   "<Material>\n   1 </Material><Center>"}}));
+  SceneDesc s = load_scene(scene(
+      {{"<Center>8</Center>", "<Center> 8\n</Center>"},
+       {"<Material>1</Material>\n            <Center>", "<Material>\n   1 </Material><Center>"}}));
   EXPECT_EQ(s.objects.at(2).material, 0);
 }
 
 TEST_F(LoaderAccepts, LookAtCamera) {
-  SceneDesc s = load_scene(scene({{"<Camera id=\"1\">", "<Camera id=\"1\" type=\"lookAt\">"},
-                                  {"<Gaze>0 0 -1</Gaze>", "<GazePoint>0 0 -5</GazePoint>"},
-                                  {"<NearPlane>-1 1 -0.5 0.5</NearPlane>", "<FovY>60</FovY>"},
-                                  {"<NearDistance>1</NearDistance>", "<NearDistance>2</NearDistance>"}}));
+  SceneDesc s =
+      load_scene(scene({{"<Camera id=\"1\">", "<Camera id=\"1\" type=\"lookAt\">"},
+                        {"<Gaze>0 0 -1</Gaze>", "<GazePoint>0 0 -5</GazePoint>"},
+                        {"<NearPlane>-1 1 -0.5 0.5</NearPlane>", "<FovY>60</FovY>"},
+                        {"<NearDistance>1</NearDistance>", "<NearDistance>2</NearDistance>"}}));
   const CameraDesc& c = s.cameras.at(0);
   double top = 2 * std::tan(30 * M_PI / 180);
   EXPECT_NEAR(c.top, top, 1e-12);
@@ -572,7 +588,8 @@ TEST_F(LoaderAccepts, CameraOutsideCameras) {
 }
 
 TEST_F(LoaderAccepts, MotionBlur) {
-  SceneDesc s = load_scene(scene({{"<Radius>0.3</Radius>", "<Radius>0.3</Radius><MotionBlur>0 0.5 -1</MotionBlur>"}}));
+  SceneDesc s = load_scene(
+      scene({{"<Radius>0.3</Radius>", "<Radius>0.3</Radius><MotionBlur>0 0.5 -1</MotionBlur>"}}));
   EXPECT_EQ(s.objects.at(2).motion.y, 0.5);
   EXPECT_EQ(s.objects.at(2).motion.z, -1);
   EXPECT_EQ(s.objects.at(0).motion.z, 0);
@@ -609,7 +626,9 @@ TEST_F(LoaderAccepts, OlderMaterialDialect) {
   EXPECT_EQ(old.materials[3].type, RT_MATERIAL_DIELECTRIC);
   // Without <Transparency> anywhere the file is of the newer kind: no type, no mirror.
   SceneDesc newer = load_scene(write(
-      "newer.xml", edit(kBase, {{"</Materials>", replace_all(mats, "<Transparency>0.5 0.5 0.5</Transparency>", "")}})));
+      "newer.xml",
+      edit(kBase,
+           {{"</Materials>", replace_all(mats, "<Transparency>0.5 0.5 0.5</Transparency>", "")}})));
   EXPECT_EQ(newer.materials.at(2).type, RT_MATERIAL_PLAIN);
   EXPECT_EQ(newer.materials.at(3).type, RT_MATERIAL_PLAIN);
 }
@@ -660,33 +679,37 @@ void expect_point(const Mat4& m, Vec3d p, Vec3d want) {
 }
 
 TEST_F(LoaderTransforms, CompositeMatrixIsRowMajor) {
-  SceneDesc s = load_scene(scene({{"<Objects>", kTransforms},
-                                  {"<Radius>0.3</Radius>", "<Radius>1</Radius><Transformations>c1</Transformations>"},
-                                  {"<Center>8</Center>", "<Center>1</Center>"}}));
+  SceneDesc s = load_scene(
+      scene({{"<Objects>", kTransforms},
+             {"<Radius>0.3</Radius>", "<Radius>1</Radius><Transformations>c1</Transformations>"},
+             {"<Center>8</Center>", "<Center>1</Center>"}}));
   // Centre vertex 1 is (-0.5, 0.5, -2).
   expect_point(s.objects.at(2).transform, {0, 0, 0}, {4.5, 6.5, 5});
 }
 
 TEST_F(LoaderTransforms, ListedOrderIsApplicationOrder) {
   // "t1 r1": translate by +x, then rotate 90 degrees about z: the origin ends at (0, 1, 0).
-  std::string path = scene({{"<Objects>", kTransforms},
-                            {"-0.875 1 -2", "0 0 0"},
-                            {"<Radius>0.3</Radius>", "<Radius>0.5</Radius><Transformations>t1 r1</Transformations>"}});
+  std::string path = scene(
+      {{"<Objects>", kTransforms},
+       {"-0.875 1 -2", "0 0 0"},
+       {"<Radius>0.3</Radius>", "<Radius>0.5</Radius><Transformations>t1 r1</Transformations>"}});
   SceneDesc s = load_scene(path);
   expect_point(s.objects.at(2).transform, {0, 0, 0}, {0, 1, 0});
   expect_point(s.objects.at(2).transform, {1, 0, 0}, {0, 1.5, 0});  // radius 0.5 scales first
-  s = load_scene(write("r.xml", edit(kBase, {{"<Objects>", kTransforms},
-                                             {"-0.875 1 -2", "0 0 0"},
-                                             {"<Radius>0.3</Radius>", "<Radius>0.5</Radius><Transformations>r1 t1</Transformations>"}})));
+  s = load_scene(write(
+      "r.xml", edit(kBase, {{"<Objects>", kTransforms},
+                            {"-0.875 1 -2", "0 0 0"},
+                            {"<Radius>0.3</Radius>",
+                             "<Radius>0.5</Radius><Transformations>r1 t1</Transformations>"}})));
   expect_point(s.objects.at(2).transform, {0, 0, 0}, {1, 0, 0});
 }
 
 TEST_F(LoaderTransforms, MeshInstanceChain) {
-  std::string path = scene(
-      {{"<Objects>", kTransforms},
-       {"<Material>1</Material>\n            <Faces>",
-        "<Material>1</Material><Transformations>t1</Transformations><Faces>"},
-       {"</Objects>", R"(<MeshInstance id="2" baseMeshId="1" resetTransform="false">
+  std::string path =
+      scene({{"<Objects>", kTransforms},
+             {"<Material>1</Material>\n            <Faces>",
+              "<Material>1</Material><Transformations>t1</Transformations><Faces>"},
+             {"</Objects>", R"(<MeshInstance id="2" baseMeshId="1" resetTransform="false">
             <Transformations>t2</Transformations></MeshInstance>
         <MeshInstance id="3" baseMeshId="2"><Transformations>r1</Transformations></MeshInstance>
         <MeshInstance id="4" baseMeshId="3" resetTransform="true">
@@ -696,20 +719,21 @@ TEST_F(LoaderTransforms, MeshInstanceChain) {
   SceneDesc s = load_scene(path);
   ASSERT_EQ(s.objects.size(), 7u);
   for (size_t i = 3; i < 7; ++i) EXPECT_EQ(s.objects[i].mesh, s.objects[0].mesh) << i;
-  expect_point(s.objects[0].transform, {0, 0, 0}, {1, 0, 0});   // t1
-  expect_point(s.objects[3].transform, {0, 0, 0}, {1, 2, 0});   // t2 after t1
-  expect_point(s.objects[4].transform, {0, 0, 0}, {-2, 1, 0});  // r1 after t2 t1 (default: no reset)
-  expect_point(s.objects[5].transform, {1, 0, 0}, {2, 0, 0});   // reset: s1 alone
-  expect_point(s.objects[6].transform, {1, 0, 0}, {2, 0, 0});   // identity after s1
+  expect_point(s.objects[0].transform, {0, 0, 0}, {1, 0, 0});  // t1
+  expect_point(s.objects[3].transform, {0, 0, 0}, {1, 2, 0});  // t2 after t1
+  expect_point(s.objects[4].transform, {0, 0, 0},
+               {-2, 1, 0});                                    // r1 after t2 t1 (default: no reset)
+  expect_point(s.objects[5].transform, {1, 0, 0}, {2, 0, 0});  // reset: s1 alone
+  expect_point(s.objects[6].transform, {1, 0, 0}, {2, 0, 0});  // identity after s1
 }
 
 TEST_F(LoaderTransforms, InstanceIdsReusingMeshIds) {
   // Older files number instances from 1 as well; baseMeshId="1" still means Mesh 1.
-  std::string path = scene(
-      {{"<Objects>", kTransforms},
-       {"<Material>1</Material>\n            <Faces>",
-        "<Material>1</Material><Transformations>t1</Transformations><Faces>"},
-       {"</Objects>", R"(<Mesh id="2"><Material>1</Material><Faces>5 6 7</Faces></Mesh>
+  std::string path =
+      scene({{"<Objects>", kTransforms},
+             {"<Material>1</Material>\n            <Faces>",
+              "<Material>1</Material><Transformations>t1</Transformations><Faces>"},
+             {"</Objects>", R"(<Mesh id="2"><Material>1</Material><Faces>5 6 7</Faces></Mesh>
         <MeshInstance id="1" baseMeshId="2"><Transformations>t2</Transformations></MeshInstance>
         <MeshInstance id="2" baseMeshId="1"></MeshInstance>
     </Objects>)"}});

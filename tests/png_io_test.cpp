@@ -143,13 +143,13 @@ Bytes idat_payload(const Bytes& png) {
 struct RawPng {
   int width = 0, height = 0, bit_depth = 8, color_type = PNG_COLOR_TYPE_RGB;
   int interlace = PNG_INTERLACE_NONE;
-  std::vector<Bytes> rows;          // Packed rows as stored in the file (16-bit big-endian).
-  std::vector<png_color> palette;   // For PNG_COLOR_TYPE_PALETTE.
-  Bytes trns;                       // Palette alpha values, if any.
+  std::vector<Bytes> rows;         // Packed rows as stored in the file (16-bit big-endian).
+  std::vector<png_color> palette;  // For PNG_COLOR_TYPE_PALETTE.
+  Bytes trns;                      // Palette alpha values, if any.
 };
 
 RawPng raw_png(int width, int height, int bit_depth, int color_type,
-              int interlace = PNG_INTERLACE_NONE) {
+               int interlace = PNG_INTERLACE_NONE) {
   RawPng raw;
   raw.width = width;
   raw.height = height;
@@ -216,8 +216,8 @@ void expect_reads_as(const std::string& path, const RawPng& raw, const Bytes& ex
 TEST(ToEightBit, RoundsHalfAwayFromZeroAndClamps) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
-  const std::vector<float> in = {254.5f, -3.0f, 300.0f, nan,  127.49f, 127.5f,
-                                 0.5f,   0.49f, 255.0f, inf,  -inf,    -0.0f};
+  const std::vector<float> in = {254.5f, -3.0f, 300.0f, nan, 127.49f, 127.5f,
+                                 0.5f,   0.49f, 255.0f, inf, -inf,    -0.0f};
   const Image8 img = to_8bit(4, 1, in);
   EXPECT_EQ(img.width, 4);
   EXPECT_EQ(img.height, 1);
@@ -303,8 +303,7 @@ TEST_F(PngIoTest, ReadNonPngThrows) {
   write_bytes(path("text.png"), Bytes{'h', 'e', 'l', 'l', 'o', ' ', 'w', 'o', 'r', 'l', 'd'});
   EXPECT_EQ(error_of([&] { read_png(path("text.png")); }),
             path("text.png") + ": cannot read PNG: not a PNG file");
-  EXPECT_NE(error_of([&] { read_png(dir_.string()); }).find("cannot read PNG"),
-            std::string::npos);
+  EXPECT_NE(error_of([&] { read_png(dir_.string()); }).find("cannot read PNG"), std::string::npos);
 }
 
 TEST_F(PngIoTest, EveryTruncationThrows) {

@@ -40,10 +40,14 @@ Args parse(int argc, char** argv) {
   a.reference = argv[2];
   for (int i = 3; i < argc; ++i) {
     std::string o = argv[i];
-    if (o == "--camera" && i + 1 < argc) a.camera = std::atoi(argv[++i]);
-    else if (o == "--cull-back-faces") a.render.cull_back_faces = true;
-    else if (o == "--criterion" && i + 1 < argc) a.criterion = argv[++i];
-    else if (o == "--budget" && i + 1 < argc) a.budget = std::atof(argv[++i]);
+    if (o == "--camera" && i + 1 < argc)
+      a.camera = std::atoi(argv[++i]);
+    else if (o == "--cull-back-faces")
+      a.render.cull_back_faces = true;
+    else if (o == "--criterion" && i + 1 < argc)
+      a.criterion = argv[++i];
+    else if (o == "--budget" && i + 1 < argc)
+      a.budget = std::atof(argv[++i]);
     else {
       std::fprintf(stderr, "reference_check: bad option '%s'\n", o.c_str());
       std::exit(2);
@@ -109,25 +113,26 @@ int main(int argc, char** argv) {
     rt::Image8 ref = rt::read_png(a.reference);
     const Camera& cam = flat.header.camera;
     if (ref.width != cam.width || ref.height != cam.height) {
-      std::fprintf(stderr, "size mismatch: render %dx%d, reference %dx%d\n", cam.width,
-                   cam.height, ref.width, ref.height);
+      std::fprintf(stderr, "size mismatch: render %dx%d, reference %dx%d\n", cam.width, cam.height,
+                   ref.width, ref.height);
       return 1;
     }
     bool hw3 = a.criterion == "hw3";
     int block = hw3 ? 4 : 1;
     double total = static_cast<double>(cam.width) * cam.height * cam.samples;
-    int stride = a.budget > 0 ? std::max(1, static_cast<int>(std::ceil(std::sqrt(total / a.budget))))
-                              : 1;
+    int stride =
+        a.budget > 0 ? std::max(1, static_cast<int>(std::ceil(std::sqrt(total / a.budget)))) : 1;
     rt::Image8 ref_subset;
     rt::Image8 img = render_subset(flat, block, stride, &ref_subset, ref);
     rt::ImageDiff full = rt::diff_images(ref_subset, img, 8);
     rt::ImageDiff down = rt::diff_images(rt::downsample(ref_subset, 4), rt::downsample(img, 4), 8);
-    std::printf("%s: %dx%d, %d spp, stride %d (%.1f %% of the pixels): MAE %.3f, over 8: %.3f %%, "
-                "max %d | 4x4 downsampled: MAE %.3f, over 8: %.3f %%\n",
-                a.reference.c_str(), cam.width, cam.height, cam.samples, stride,
-                100.0 / (stride * stride), full.mae, 100 * full.frac_over, full.max_abs, down.mae,
-                100 * down.frac_over);
-    bool ok = hw3 ? (down.mae <= 2.0 && full.mae <= 5.0) : (full.mae <= 1.0 && full.frac_over <= 0.01);
+    std::printf(
+        "%s: %dx%d, %d spp, stride %d (%.1f %% of the pixels): MAE %.3f, over 8: %.3f %%, "
+        "max %d | 4x4 downsampled: MAE %.3f, over 8: %.3f %%\n",
+        a.reference.c_str(), cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride),
+        full.mae, 100 * full.frac_over, full.max_abs, down.mae, 100 * down.frac_over);
+    bool ok =
+        hw3 ? (down.mae <= 2.0 && full.mae <= 5.0) : (full.mae <= 1.0 && full.frac_over <= 0.01);
     std::printf("%s (criterion %s)\n", ok ? "PASS" : "FAIL", a.criterion.c_str());
     return ok ? 0 : 1;
   } catch (const std::exception& e) {

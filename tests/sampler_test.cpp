@@ -43,7 +43,8 @@ TEST(Sampler, SameKeySameValueWhateverTheOrder) {
 
 TEST(Sampler, SeedChangesTheStream) {
   int equal = 0;
-  for (uint p = 0; p < 1000; ++p) equal += Random1D(Key(p, 0, 1, 0), 5) == Random1D(Key(p, 0, 1, 1), 5);
+  for (uint p = 0; p < 1000; ++p)
+    equal += Random1D(Key(p, 0, 1, 0), 5) == Random1D(Key(p, 0, 1, 1), 5);
   EXPECT_LE(equal, 2);  // 24-bit values: a chance collision is about 1000 / 2^24.
 }
 

@@ -1317,8 +1317,9 @@ TEST(StabilityAreaLight, LightNearASurfaceDoesNotLeak) {
       for (bool use_eps : {true, false}) {
         rt::SceneDesc scene = scene_at(lift, true);
         o.use_scene_epsilon = use_eps;
-        std::string label = std::string(lift == 0 ? "light on table"
-                                        : lift < 1e-4 ? "light 1e-7 above" : "light 1e-3 above") +
+        std::string label = std::string(lift == 0     ? "light on table"
+                                        : lift < 1e-4 ? "light 1e-7 above"
+                                                      : "light 1e-3 above") +
                             (use_eps ? " eps=scene" : " eps=none");
         rt::RenderResult under = RenderOn(d, Flatten(scene, o, 0), label + " under");
         rt::RenderResult above = RenderOn(d, Flatten(scene, o, 1), label + " above");

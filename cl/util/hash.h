@@ -14,7 +14,9 @@ RT_DEVICE uint HashUint(uint v) {
 }
 
 // Order-dependent combination, so (a, b) and (b, a) give different keys.
-RT_DEVICE uint HashCombine(uint seed, uint v) { return HashUint(seed ^ (v + 0x9e3779b9u + (seed << 6) + (seed >> 2))); }
+RT_DEVICE uint HashCombine(uint seed, uint v) {
+  return HashUint(seed ^ (v + 0x9e3779b9u + (seed << 6) + (seed >> 2)));
+}
 
 RT_DEVICE uint Hash4(uint a, uint b, uint c, uint d) {
   return HashCombine(HashCombine(HashCombine(HashUint(a), b), c), d);

@@ -60,7 +60,6 @@ RT_DEVICE float PowF(float x, float e) {
   return pow(x, e);
 }
 
-
 // A right-handed orthonormal basis around a unit vector n (Duff et al. 2017), used for
 // glossy lobes; it has no branch that could flip between devices.
 RT_DEVICE void CoordinateSystem(float3 n, RT_PRIVATE float3* u, RT_PRIVATE float3* v) {
