@@ -4,7 +4,7 @@
 # false-alarm rates (A vs A, different seeds) and detection rates of planted biases
 # (a light 2 % brighter, roughness 10 % larger, the camera one pixel to the right), with
 # 95 % Clopper-Pearson intervals, and the per-test rejection rates under H0.
-# About 12 minutes on 2 cores.
+# About 15 minutes on 2 cores.
 #
 # usage: compare/calibrate.sh [BUILD_DIR] [TRIAL_FACTOR]
 #   TRIAL_FACTOR scales every trial count (e.g. 0.1 for a quick look).

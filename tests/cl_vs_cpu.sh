@@ -9,7 +9,8 @@
 #
 # usage: cl_vs_cpu.sh RAYTRACER COMPARE SCENE.xml WORKDIR quick|full [raytracer flags...]
 # quick: about 4096 pixels of the same view (--resolution-scale) at 24 samples per pixel
-#        (not a perfect square, so samples are independent and Welch's test is exact).
+#        (not a perfect square, so samples are independent and Welch's test runs at its
+#        nominal level).
 # full:  the scene's own resolution and sample count (at least 15 spp: Welch needs a
 #        variance); perfect-square counts are stratified, which makes welch conservative.
 # Exit status: 0 pass, 1 fail, 77 skipped (no OpenCL device, or the scene's files are
