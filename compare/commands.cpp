@@ -62,7 +62,8 @@ struct Args {
   }
 };
 
-const std::vector<std::string> kFamilyFlags = {"--bh", "--no-uniformity", "--allow-weighted"};
+const std::vector<std::string> kFamilyFlags = {"--bh", "--no-uniformity", "--allow-weighted",
+                                               "--pooled"};
 const std::vector<std::string> kFamilyValues = {"--alpha", "--tile", "--rel-tol", "--abs-tol",
                                                 "--out-dir", "--gain"};
 
@@ -112,6 +113,7 @@ int run_welch(int argc, char** argv) {
   check_testable(ma, mb, a.has("--allow-weighted"));
   WelchOptions wo;
   wo.tile = static_cast<int>(a.num("--tile", 1, 1, 1 << 16));
+  wo.pooled = a.has("--pooled");
   wo.rel_tol = a.num("--rel-tol", wo.rel_tol, 0, 1);
   wo.abs_tol = a.num("--abs-tol", wo.abs_tol, 0, 1e6);
   FamilyOptions fo = family_options(a);

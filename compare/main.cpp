@@ -42,6 +42,9 @@ welch A B     Welch's unequal-variance t-test per pixel (or per tile) and channe
    the sample variance overestimate the variance of the mean, so the test is
    conservative there and loses power; a non-square --spp draws independent
    samples and gives the nominal rate.
+   --pooled        per-sample variance of a pixel = the larger of the two renders'
+                   (same scene and sampler, other sample counts): a low-spp render
+                   that missed a pixel's rare bright paths reports zero variance
    --tile K        test K x K tiles (mean of the pixel means, variances summed):
                    power against small, spatially smooth biases (default 1)
 paired A B    Sign tests on per-pixel differences, for renders with the same --seed.

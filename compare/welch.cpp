@@ -75,13 +75,17 @@ Family run(int w, int h, const WelchOptions& o, AddA add_a, AddB add_b) {
   return f;
 }
 
-void add_moments(const rt::MomentImage& m, size_t i, Side* s, bool clamp) {
+// Adds pixel i of `m`; with `other`, the per-sample variance is the larger of the two.
+void add_moments(const rt::MomentImage& m, size_t i, Side* s, bool clamp,
+                 const rt::MomentImage* other = nullptr) {
   double n = m.count[i];
   s->min_n = std::min(s->min_n, n);
   for (int c = 0; c < 3; ++c) {
     double mean = m.mean[i * 3 + c];
     if (clamp) mean = std::clamp(mean, 0.0, 255.0);
-    s->add(c, mean, n > 0 ? m.var[i * 3 + c] / n : 0.0, n > 1 ? n - 1 : kInf);
+    double var = m.var[i * 3 + c];
+    if (other) var = std::max(var, static_cast<double>(other->var[i * 3 + c]));
+    s->add(c, mean, n > 0 ? var / n : 0.0, n > 1 ? n - 1 : kInf);
   }
 }
 
@@ -106,8 +110,9 @@ void check_testable(const rt::MomentImage& a, const rt::MomentImage& b, bool all
 
 Family welch_test(const rt::MomentImage& a, const rt::MomentImage& b, const WelchOptions& o) {
   return run(
-      a.width, a.height, o, [&](size_t i, Side* s) { add_moments(a, i, s, false); },
-      [&](size_t i, Side* s) { add_moments(b, i, s, false); });
+      a.width, a.height, o,
+      [&](size_t i, Side* s) { add_moments(a, i, s, false, o.pooled ? &b : nullptr); },
+      [&](size_t i, Side* s) { add_moments(b, i, s, false, o.pooled ? &a : nullptr); });
 }
 
 Family welch_vs_image(const rt::Image8& ref, const rt::MomentImage& b, const WelchOptions& o) {

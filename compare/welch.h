@@ -22,6 +22,11 @@ struct WelchOptions {
   // are counted apart: means within r are equal and not tested; others are tested on r
   // alone and, when rejected, are deterministic failures.
   double rel_tol = 6e-4;
+  // Take each pixel's per-sample variance as the larger of the two renders' estimates.
+  // Right when both draw from the same per-sample distribution (same scene and sampler,
+  // other sample counts): a render with few samples can see none of a pixel's rare
+  // bright paths and report zero variance, which plain Welch then trusts.
+  bool pooled = false;
   double abs_tol = 1e-6;
 };
 
