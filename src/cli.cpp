@@ -46,7 +46,8 @@ Sampling:
   --time-limit S         stop sampling when the next pass would end after S seconds
                          (every pixel keeps the same sample count; at least one pass)
   --noise-target E       stop sampling once the estimated relative error of the image
-                         (root mean variance of the pixel means over the mean) is below E
+                         (root mean of var(pixel mean) / (mean^2 + 1), 0-255 scale)
+                         is below E; E^2 estimates the relative MSE of bench/sweep
   --dielectric split|choose
                          split (default, as the course): follow both the reflected and
                          the refracted ray; choose: follow one, picked by Fresnel

@@ -24,8 +24,9 @@ struct RenderResult {
   uint64_t nonfinite() const;
 };
 
-// The estimated relative error of an image: the root mean of every pixel's and channel's
-// variance of the mean (var / n), over the image's mean radiance. Zero with < 2 samples.
+// The estimated relative error of an image: the root mean, over pixels and channels, of
+// the variance of the pixel mean over (mean^2 + 1), radiance on the 0-255 scale (the
+// square root of the relative MSE that bench/sweep measures). 0 with < 2 samples.
 double relative_noise(const std::vector<PixelAccum>& accum);
 
 // Renders the camera set in `flat` on `threads` CPU threads (0: all cores), in passes of

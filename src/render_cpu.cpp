@@ -27,20 +27,18 @@ uint64_t RenderResult::nonfinite() const {
 }
 
 double relative_noise(const std::vector<PixelAccum>& accum) {
-  double var_of_mean = 0, mean = 0;
+  double sum = 0;
   for (const PixelAccum& a : accum) {
     double n = a.sum_sq.w;
     if (n < 2) return 0;
-    const double sum[3] = {a.sum.x, a.sum.y, a.sum.z};
+    const double mean[3] = {a.sum.x / a.sum.w, a.sum.y / a.sum.w, a.sum.z / a.sum.w};
     const double sq[3] = {a.sum_sq.x, a.sum_sq.y, a.sum_sq.z};
     for (int c = 0; c < 3; ++c) {
-      double m = sum[c] / a.sum.w;
-      var_of_mean += std::max(0.0, (sq[c] / n - m * m) * n / (n - 1)) / n;
-      mean += m;
+      double var = std::max(0.0, (sq[c] / n - mean[c] * mean[c]) * n / (n - 1));
+      sum += var / n / (mean[c] * mean[c] + 1.0);
     }
   }
-  if (mean <= 0) return 0;
-  return std::sqrt(var_of_mean / (3.0 * accum.size())) / (mean / (3.0 * accum.size()));
+  return accum.empty() ? 0 : std::sqrt(sum / (3.0 * accum.size()));
 }
 
 RenderResult render_cpu(const FlatScene& flat, int threads, Progress& progress,

@@ -130,6 +130,25 @@ TEST(Welch, OnePixelIsTheTextbookWelchTest) {
   EXPECT_NEAR(c.diff[1], 2.0, 1e-12);
 }
 
+TEST(Welch, PooledTakesTheLargerPerSampleVariance) {
+  // A 16-sample render that missed a pixel's rare bright paths (mean 0, variance 0)
+  // against a 256-sample render that saw them: plain Welch trusts the zero variance,
+  // pooled uses 6895 for both sides: se^2 = 6895 (1/256 + 1/16).
+  rt::MomentImage a = Constant(1, 1, 47.88f, 6895.0f, 256), b = Constant(1, 1, 0.0f, 0.0f, 16);
+  cmp::WelchOptions plain, pooled;
+  pooled.pooled = true;
+  double p_plain = cmp::welch_test(a, b, plain).cells[0].p[0];
+  double p_pooled = cmp::welch_test(a, b, pooled).cells[0].p[0];
+  EXPECT_LT(p_plain, 1e-15);
+  const double mean = 47.88f;  // As stored (float).
+  double se2 = 6895.0 * (1.0 / 256 + 1.0 / 16), res = 6e-4 * mean / 2 + 1e-6;  // 16^(1/4)
+  double total = se2 + res * res;
+  double dof = total * total /
+               ((6895.0 / 256) * (6895.0 / 256) / 255 + (6895.0 / 16) * (6895.0 / 16) / 15);
+  EXPECT_NEAR(p_pooled, cmp::student_t_two_sided(mean / std::sqrt(total), dof), 1e-9);
+  EXPECT_GT(p_pooled, 0.01);
+}
+
 TEST(Welch, TilesAverageMeansAndSumVariances) {
   // 4x4 pixels, tile 4: K = 16 pixels, all var v and n samples: se^2 = 2 v / (n K) and
   // Welch-Satterthwaite gives 2 K (n - 1) degrees of freedom.

@@ -45,3 +45,54 @@ TEST(Render, SeedSelectsTheRandomStream) {
 }
 
 }  // namespace
+
+namespace {
+
+rt::RenderResult RenderAreaWithStop(const rt::StopRule& stop, int spp) {
+  rt::SceneDesc scene = rt::load_scene(RT_SOURCE_DIR "/scenes/example.xml");
+  scene.cameras[0].width = 48;
+  scene.cameras[0].height = 36;
+  rt::RenderOptions opt;
+  opt.spp = spp;
+  rt::FlatScene flat = rt::flatten_scene(scene, opt);
+  rt::set_camera(flat, scene, 0, opt);
+  rt::Progress quiet(false, "", 0);
+  return rt::render_cpu(flat, 2, quiet, stop);
+}
+
+// Every pixel must hold the same number of samples: rules stop between passes only.
+int CommonSampleCount(const rt::RenderResult& r) {
+  int n = static_cast<int>(r.accum[0].sum_sq.w);
+  for (const PixelAccum& a : r.accum)
+    if (static_cast<int>(a.sum_sq.w) != n) return -1;
+  return n;
+}
+
+TEST(Render, NoiseTargetStopsEarlyWithEqualSampleCounts) {
+  rt::StopRule stop;
+  stop.noise_target = 0.05;
+  rt::RenderResult r = RenderAreaWithStop(stop, 4096);
+  EXPECT_LT(r.spp, 4096);
+  EXPECT_EQ(CommonSampleCount(r), r.spp);
+  EXPECT_LT(rt::relative_noise(r.accum), 0.05);
+  // The pass before the last (half as many samples, or fewer) was still too noisy, or the
+  // rule would have stopped there: the estimate falls with more samples.
+  rt::RenderResult half = RenderAreaWithStop({}, r.spp / 2);
+  EXPECT_GT(rt::relative_noise(half.accum), rt::relative_noise(r.accum));
+}
+
+TEST(Render, TimeLimitKeepsEqualSampleCounts) {
+  rt::StopRule stop;
+  stop.time_limit_s = 0.05;
+  rt::RenderResult r = RenderAreaWithStop(stop, 1 << 16);
+  EXPECT_GE(r.spp, 1);
+  EXPECT_LT(r.spp, 1 << 16);
+  EXPECT_EQ(CommonSampleCount(r), r.spp);
+  EXPECT_LT(r.seconds, 2.0);  // Far below the 65536 samples asked (about 30 s here).
+}
+
+TEST(Render, RelativeNoiseIsZeroWithoutVarianceInformation) {
+  EXPECT_EQ(rt::relative_noise(RenderAreaWithStop({}, 1).accum), 0.0);
+}
+
+}  // namespace
