@@ -65,8 +65,8 @@ rt::RenderResult Render(const rt::SceneDesc& scene, const Config& c, int camera,
   rt::set_camera(flat, scene, camera, c.opt);
   rt::Progress quiet(false, "", 0);
   if (c.device == "cl") {
+    // The renderer's time excludes the program build and its warm-up launch.
     rt::ClTimings timings;
-    cl->render(flat, c.generic, quiet, &timings);  // Warm-up: compile outside the timing.
     return cl->render(flat, c.generic, quiet, &timings);
   }
   return rt::render_cpu(flat, 0, quiet);

@@ -10,11 +10,8 @@
 #define RT_DEVICE static inline
 #define RT_GLOBAL __global
 #define RT_PRIVATE __private
-#define RT_CONSTANT __constant
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float2(x, y) ((float2)((x), (y)))
-#define rt_float_as_int(f) as_int(f)
-#define rt_int_as_float(i) as_float(i)
 // The CPU reference rounds every operation; contraction into FMA would make the two
 // devices disagree in the last bit, so it is off here too.
 #pragma OPENCL FP_CONTRACT OFF
@@ -23,12 +20,10 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 #define RT_DEVICE inline
 #define RT_GLOBAL
 #define RT_PRIVATE
-#define RT_CONSTANT static const
 
 typedef std::uint32_t uint;
 
@@ -71,17 +66,6 @@ using std::pow;
 using std::sin;
 using std::sqrt;
 using std::tan;
-
-inline int rt_float_as_int(float f) {
-  int i;
-  std::memcpy(&i, &f, sizeof i);
-  return i;
-}
-inline float rt_int_as_float(int i) {
-  float f;
-  std::memcpy(&f, &i, sizeof f);
-  return f;
-}
 
 #endif
 

@@ -106,6 +106,14 @@ void need_two(const Args& a, const char* what) {
 
 }  // namespace
 
+// The verdict of a family of tests: figures, maps for a person, and the exit status.
+int conclude(const Args& a, const char* name, Family& f, const FamilyOptions& fo) {
+  Verdict v = decide(f, fo);
+  print_verdict(v, fo, f);
+  write_family_maps(a, name, f, v);
+  return v.pass ? 0 : 1;
+}
+
 int run_welch(int argc, char** argv) {
   Args a(argc, argv, kFamilyFlags, kFamilyValues);
   need_two(a, "welch");
@@ -124,10 +132,7 @@ int run_welch(int argc, char** argv) {
     std::printf("  note: equal seeds: the samples are correlated and this test loses power "
                 "(use `compare paired`)\n");
   Family f = welch_test(ma, mb, wo);
-  Verdict v = decide(f, fo);
-  print_verdict(v, fo, f);
-  write_family_maps(a, "welch", f, v);
-  return v.pass ? 0 : 1;
+  return conclude(a, "welch", f, fo);
 }
 
 int run_paired(int argc, char** argv) {
@@ -152,10 +157,7 @@ int run_paired(int argc, char** argv) {
               pf.differing, pf.values, pf.values ? 100.0 * pf.differing / pf.values : 0.0,
               pf.positive, pf.max_abs, pf.max_z);
   Family f = paired_test(ma, mb, po);
-  Verdict v = decide(f, fo);
-  print_verdict(v, fo, f);
-  write_family_maps(a, "paired", f, v);
-  return v.pass ? 0 : 1;
+  return conclude(a, "paired", f, fo);
 }
 
 int run_exact(int argc, char** argv) {

@@ -41,6 +41,19 @@ rt::MeshDesc Quad(double half, double z) {
   return m;
 }
 
+// A diffuse floor (z = 0, kd given) whose point at the origin a point camera at height 5
+// sees; the tests add their lights.
+rt::SceneDesc FloorSeenFromAbove(double kd, int samples) {
+  rt::SceneDesc s;
+  s.cameras.push_back(PointCamera({0, 0, 5}, samples));
+  s.materials.push_back(Diffuse(kd));
+  s.meshes.push_back(Quad(10, 0));
+  rt::ObjectDesc floor;
+  floor.mesh = 0;
+  s.objects.push_back(floor);
+  return s;
+}
+
 struct PixelStats {
   double mean, standard_error;
 };
@@ -71,13 +84,7 @@ double CornerIrradiance(double L, double a, double b, double h) {
 TEST(Analytic, AreaLightIrradianceMatchesTheFormFactor) {
   // A floor at z=0 with kd = 1; a square light of side 2 at height 1.5 above (0.3, 0.2)
   // facing down; the camera sees the floor point at the origin.
-  rt::SceneDesc s;
-  s.cameras.push_back(PointCamera({0, 0, 5}, 4096));
-  s.materials.push_back(Diffuse(1));
-  s.meshes.push_back(Quad(10, 0));
-  rt::ObjectDesc floor;
-  floor.mesh = 0;
-  s.objects.push_back(floor);
+  rt::SceneDesc s = FloorSeenFromAbove(1, 4096);
   const double L = 1000, side = 2, h = 1.5, cx = 0.3, cy = 0.2;
   AreaLight light{};
   light.corner = make_float3(cx - side / 2, cy - side / 2, h);
@@ -122,13 +129,7 @@ TEST(Analytic, MovingSphereLeavesItsTimeAveragedCoverage) {
 
 TEST(Analytic, PointLightFollowsTheInverseSquareLaw) {
   // kd = 0.5, intensity 1000 at height 2 directly above the seen point: 0.5 * 1000 / 4.
-  rt::SceneDesc s;
-  s.cameras.push_back(PointCamera({0, 0, 5}, 1));
-  s.materials.push_back(Diffuse(0.5));
-  s.meshes.push_back(Quad(10, 0));
-  rt::ObjectDesc floor;
-  floor.mesh = 0;
-  s.objects.push_back(floor);
+  rt::SceneDesc s = FloorSeenFromAbove(0.5, 1);
   PointLight pl{};
   pl.position = make_float3(0, 0, 2);
   pl.intensity = make_float3(1000, 1000, 1000);
