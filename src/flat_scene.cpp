@@ -44,7 +44,10 @@ Aabb transformed_box(const Aabb& b, const Mat4& m, Vec3d motion) {
   return out;
 }
 
-// Area-weighted vertex normals: each face adds its unnormalized cross product.
+bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+}  // namespace
+
 std::vector<Vec3d> vertex_normals(const MeshDesc& mesh) {
   std::vector<Vec3d> n(mesh.positions.size());
   for (auto& t : mesh.triangles) {
@@ -56,10 +59,6 @@ std::vector<Vec3d> vertex_normals(const MeshDesc& mesh) {
     if (length(v) > 0) v = normalize(v);
   return n;
 }
-
-bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
-
-}  // namespace
 
 SceneData FlatScene::view() const {
   SceneData sd;

@@ -56,6 +56,10 @@ struct FlatScene {
 // Builds the BVHs and arrays; the camera is set separately (geometry is shared by every
 // camera of a file).
 FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options);
+
+// The normals of shadingMode="smooth": per vertex, the normalized sum of the unnormalized
+// cross products of its faces (area-weighted). Exporters write the same normals.
+std::vector<Vec3d> vertex_normals(const MeshDesc& mesh);
 void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options);
 
 // The feature bits the scene needs for `camera` (cl/features.h).

@@ -1,0 +1,33 @@
+# rtconvert (tools/rtconvert; built only when Assimp is installed), label `convert`:
+# every course scene of tests/course_scenes.txt exported to glTF and imported back renders
+# the same image (tests/convert_roundtrip.sh), an OBJ + MTL import maps its materials and
+# lights as README.md's table says, and bad input gets one line and status 1.
+if(NOT TARGET rtconvert)
+  message(STATUS "convert tests skipped: rtconvert is not built (libassimp-dev missing)")
+  return()
+endif()
+set(rt_convert_done "")
+foreach(line IN LISTS rt_course_lines)
+  string(REGEX REPLACE "[ \t]+" ";" fields "${line}")
+  list(POP_FRONT fields name scene reference criterion)
+  # One test per scene file and camera (the hw1_nobfc lines repeat hw1's files).
+  list(FIND fields "--camera" at)
+  set(camera 0)
+  if(at GREATER -1)
+    math(EXPR at "${at} + 1")
+    list(GET fields ${at} camera)
+  endif()
+  if("${scene}:${camera}" IN_LIST rt_convert_done)
+    continue()
+  endif()
+  list(APPEND rt_convert_done "${scene}:${camera}")
+  add_test(NAME convert.${name}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/convert_roundtrip.sh $<TARGET_FILE:raytracer>
+                   $<TARGET_FILE:rtconvert> $<TARGET_FILE:compare> ${RT_SHARED_SCENES_DIR}/${scene}
+                   ${CMAKE_CURRENT_BINARY_DIR}/convert/${name} ${fields})
+  set_tests_properties(convert.${name} PROPERTIES LABELS convert SKIP_RETURN_CODE 77)
+endforeach()
+add_test(NAME convert.cli COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/convert_cli.sh
+                                  $<TARGET_FILE:rtconvert> $<TARGET_FILE:raytracer>
+                                  ${CMAKE_CURRENT_BINARY_DIR}/convert/cli)
+set_tests_properties(convert.cli PROPERTIES LABELS convert)

@@ -1,0 +1,48 @@
+// rtconvert: the course's XML scenes to and from the formats of other tools (through
+// Assimp) and pbrt-v4. Lives outside src/ so that Assimp never becomes a dependency of
+// the renderer; it reuses the core's loader (rt::load_scene) and PLY reader.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene.h"
+
+namespace rtconvert {
+
+// Collects the warnings of one conversion (approximate mappings, dropped features); main
+// prints each on its own line, so nothing approximate happens silently.
+struct Report {
+  std::vector<std::string> warnings;
+  void warn(const std::string& what) { warnings.push_back(what); }
+};
+
+// Thrown for input that cannot be converted: one line naming the file and the feature.
+struct ConvertError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Per-mesh names for the files written beside the XML ("<stem>_mesh3.ply").
+struct ImportedScene {
+  rt::SceneDesc scene;
+  std::vector<std::string> mesh_names;  // Parallel to scene.meshes; may be empty.
+};
+
+// Import: any file Assimp reads. glTF files written by export_gltf carry the course's
+// exact values in `extras` (see course_extras.h) and come back bit for bit.
+ImportedScene import_with_assimp(const std::string& path, int default_width, Report& report);
+
+// Writes the scene as course XML; meshes above a few triangles go to binary PLY files
+// beside it.
+void write_course_xml(const ImportedScene& in, const std::string& xml_path, Report& report);
+
+// Export through Assimp: format "glb2" (binary glTF 2.0, with cameras, lights and extras
+// added to its JSON) or "obj" (OBJ + MTL).
+void export_with_assimp(const rt::SceneDesc& scene, const std::string& path,
+                        const std::string& format, Report& report);
+
+// Export to pbrt-v4's text format; what does not map is listed in a comment at the top.
+void export_pbrt(const rt::SceneDesc& scene, const std::string& path, Report& report);
+
+}  // namespace rtconvert

@@ -1,0 +1,166 @@
+// Export through Assimp: the scene becomes an aiScene (one node per object, one mesh per
+// (geometry, material) pair, since glTF and OBJ bind materials to meshes, not nodes) and
+// Assimp writes it. Assimp 5.2's glTF exporter writes neither cameras, nor lights, nor
+// extras, so for .glb they are added to its JSON afterwards (gltf_extras_export.cpp).
+#include <assimp/material.h>
+#include <assimp/scene.h>
+#include <assimp/Exporter.hpp>
+
+#include <cmath>
+#include <map>
+
+#include "convert.h"
+#include "flat_scene.h"
+#include "gltf_export.h"
+
+namespace rtconvert {
+namespace {
+
+// A unit sphere (smooth normals are its positions); spheres are kept exactly in extras.
+rt::MeshDesc unit_sphere() {
+  const int rings = 16, segments = 32;
+  rt::MeshDesc m;
+  m.smooth = true;
+  for (int r = 0; r <= rings; ++r)
+    for (int s = 0; s <= segments; ++s) {
+      double th = M_PI * r / rings, ph = 2 * M_PI * s / segments;
+      m.positions.push_back(
+          {std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)});
+    }
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      int a = r * (segments + 1) + s, b = a + segments + 1;
+      if (r > 0) m.triangles.push_back({a, a + 1, b});
+      if (r < rings - 1) m.triangles.push_back({a + 1, b + 1, b});
+    }
+  return m;
+}
+
+aiMesh* make_mesh(const rt::MeshDesc& desc, unsigned material, const std::string& name) {
+  aiMesh* m = new aiMesh;
+  m->mName = name;
+  m->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+  m->mMaterialIndex = material;
+  m->mNumVertices = static_cast<unsigned>(desc.positions.size());
+  m->mVertices = new aiVector3D[m->mNumVertices];
+  for (unsigned i = 0; i < m->mNumVertices; ++i) {
+    const rt::Vec3d& p = desc.positions[i];
+    m->mVertices[i] =
+        aiVector3D(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+  }
+  // Flat meshes carry no normals: glTF viewers then shade them flat, as the course does.
+  if (desc.smooth) {
+    std::vector<rt::Vec3d> n = rt::vertex_normals(desc);
+    m->mNormals = new aiVector3D[m->mNumVertices];
+    for (unsigned i = 0; i < m->mNumVertices; ++i)
+      m->mNormals[i] = aiVector3D(static_cast<float>(n[i].x), static_cast<float>(n[i].y),
+                                  static_cast<float>(n[i].z));
+  }
+  m->mNumFaces = static_cast<unsigned>(desc.triangles.size());
+  m->mFaces = new aiFace[m->mNumFaces];
+  for (unsigned f = 0; f < m->mNumFaces; ++f) {
+    m->mFaces[f].mNumIndices = 3;
+    m->mFaces[f].mIndices = new unsigned[3];
+    for (int k = 0; k < 3; ++k)
+      m->mFaces[f].mIndices[k] = static_cast<unsigned>(desc.triangles[f][k]);
+  }
+  return m;
+}
+
+// The Blinn-Phong values as OBJ/MTL has them (Kd, Ks, Ka, Ns, Ni); glTF's native values
+// are written into the JSON later.
+aiMaterial* make_material(const Material& mat, size_t index) {
+  aiMaterial* m = new aiMaterial;
+  aiString name(material_name(index));
+  m->AddProperty(&name, AI_MATKEY_NAME);
+  auto colour = [](float3 c) { return aiColor3D(c.x, c.y, c.z); };
+  aiColor3D kd = colour(mat.diffuse), ks = colour(mat.specular), ka = colour(mat.ambient);
+  m->AddProperty(&kd, 1, AI_MATKEY_COLOR_DIFFUSE);
+  m->AddProperty(&ks, 1, AI_MATKEY_COLOR_SPECULAR);
+  m->AddProperty(&ka, 1, AI_MATKEY_COLOR_AMBIENT);
+  m->AddProperty(&mat.phong_exponent, 1, AI_MATKEY_SHININESS);
+  m->AddProperty(&mat.refraction_index, 1, AI_MATKEY_REFRACTI);
+  return m;
+}
+
+aiMatrix4x4 to_ai(const rt::Mat4& t) {
+  aiMatrix4x4 a;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) a[r][c] = static_cast<float>(t(r, c));
+  return a;
+}
+
+}  // namespace
+
+void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const std::string& format,
+                        Report& report) {
+  aiScene* scene = new aiScene;
+  scene->mRootNode = new aiNode("root");
+  scene->mNumMaterials = static_cast<unsigned>(s.materials.size());
+  scene->mMaterials = new aiMaterial*[scene->mNumMaterials];
+  for (size_t i = 0; i < s.materials.size(); ++i)
+    scene->mMaterials[i] = make_material(s.materials[i], i);
+
+  const rt::MeshDesc sphere = unit_sphere();
+  std::map<std::pair<int, int>, unsigned> pair_mesh;  // (mesh or -1 for sphere, material)
+  std::vector<aiMesh*> meshes;
+  std::vector<aiNode*> nodes;
+  for (size_t i = 0; i < s.objects.size(); ++i) {
+    const rt::ObjectDesc& o = s.objects[i];
+    const int geometry = o.kind == rt::ObjectDesc::kSphere ? -1 : o.mesh;
+    auto [it, added] = pair_mesh.emplace(std::make_pair(geometry, o.material),
+                                         static_cast<unsigned>(meshes.size()));
+    if (added)
+      meshes.push_back(make_mesh(
+          geometry < 0 ? sphere : s.meshes[geometry], static_cast<unsigned>(o.material),
+          geometry < 0
+              ? "sphere_material" + std::to_string(o.material)
+              : "mesh" + std::to_string(geometry) + "_material" + std::to_string(o.material)));
+    aiNode* n = new aiNode(object_name(i));
+    n->mParent = scene->mRootNode;
+    n->mTransformation = to_ai(o.transform);
+    n->mNumMeshes = 1;
+    n->mMeshes = new unsigned[1]{it->second};
+    nodes.push_back(n);
+  }
+  scene->mNumMeshes = static_cast<unsigned>(meshes.size());
+  scene->mMeshes = new aiMesh*[meshes.size()];
+  std::copy(meshes.begin(), meshes.end(), scene->mMeshes);
+  scene->mRootNode->mNumChildren = static_cast<unsigned>(nodes.size());
+  scene->mRootNode->mChildren = new aiNode*[nodes.size()];
+  std::copy(nodes.begin(), nodes.end(), scene->mRootNode->mChildren);
+
+  Assimp::Exporter exporter;
+  if (exporter.Export(scene, format, path) != AI_SUCCESS) {
+    std::string err = exporter.GetErrorString();
+    delete scene;
+    throw ConvertError(path + ": Assimp export (" + format + ") failed: " + err);
+  }
+  delete scene;
+
+  if (format == "glb2") {
+    add_course_data_to_glb(s, path, report);
+    return;
+  }
+  // OBJ and MTL: what they cannot hold, said once.
+  int spheres = 0, moving = 0, special = 0;
+  for (const auto& o : s.objects) {
+    spheres += o.kind == rt::ObjectDesc::kSphere;
+    moving += o.motion.x != 0 || o.motion.y != 0 || o.motion.z != 0;
+  }
+  for (const auto& m : s.materials) special += m.type != RT_MATERIAL_PLAIN;
+  report.warn(path + ": OBJ has no cameras or lights: " + std::to_string(s.cameras.size()) +
+              " cameras, " + std::to_string(s.point_lights.size()) + " point and " +
+              std::to_string(s.area_lights.size()) + " area lights not written");
+  report.warn(path + ": OBJ has no instances or transforms: " + std::to_string(s.objects.size()) +
+              " objects written as world-space copies");
+  if (spheres)
+    report.warn(path + ": " + std::to_string(spheres) + " spheres tessellated (512 triangles)");
+  if (moving) report.warn(path + ": " + std::to_string(moving) + " motion-blur vectors lost");
+  if (special)
+    report.warn(path + ": MTL: " + std::to_string(special) +
+                " mirror/conductor/dielectric materials written as their Blinn-Phong part "
+                "(MirrorReflectance, AbsorptionIndex, AbsorptionCoefficient, Roughness lost)");
+}
+
+}  // namespace rtconvert

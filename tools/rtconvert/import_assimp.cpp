@@ -1,0 +1,260 @@
+// Import through Assimp: nodes become objects (a mesh used by several nodes, or identical
+// geometry under several names, becomes one Mesh and MeshInstances), materials follow
+// material_map.cpp, emissive parallelograms become area lights. A glTF file written by
+// rtconvert carries extras.ceng795 on its scene, materials, nodes, cameras and lights; those
+// exact values replace the approximate native ones.
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+
+#include <cmath>
+#include <map>
+
+#include "convert.h"
+#include "course_extras.h"
+#include "gltf_export.h"
+#include "import_lights.h"
+#include "material_map.h"
+
+namespace rtconvert {
+namespace {
+
+using rt::Mat4;
+using rt::Vec3d;
+
+Mat4 from_ai(const aiMatrix4x4& a) {
+  Mat4 m;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m(r, c) = a[r][c];
+  return m;
+}
+
+// True when some vertex normal leans away from its face: the file means smooth shading.
+bool has_smooth_normals(const aiMesh& m) {
+  if (!m.HasNormals()) return false;
+  for (unsigned f = 0; f < m.mNumFaces; ++f) {
+    const aiFace& face = m.mFaces[f];
+    aiVector3D a = m.mVertices[face.mIndices[0]], b = m.mVertices[face.mIndices[1]],
+               c = m.mVertices[face.mIndices[2]];
+    aiVector3D n = (b - a) ^ (c - a);
+    if (n.Length() == 0) continue;
+    n.Normalize();
+    for (int k = 0; k < 3; ++k) {
+      aiVector3D v = m.mNormals[face.mIndices[k]];
+      if (v.Length() > 0 && (v.Normalize() * n) < 0.999f) return true;
+    }
+  }
+  return false;
+}
+
+rt::MeshDesc mesh_of(const aiMesh& m) {
+  rt::MeshDesc d;
+  d.element = std::string("mesh '") + m.mName.C_Str() + "'";
+  for (unsigned i = 0; i < m.mNumVertices; ++i)
+    d.positions.push_back({m.mVertices[i].x, m.mVertices[i].y, m.mVertices[i].z});
+  for (unsigned f = 0; f < m.mNumFaces; ++f)
+    if (m.mFaces[f].mNumIndices == 3)
+      d.triangles.push_back({static_cast<int>(m.mFaces[f].mIndices[0]),
+                             static_cast<int>(m.mFaces[f].mIndices[1]),
+                             static_cast<int>(m.mFaces[f].mIndices[2])});
+  return d;
+}
+
+bool same_geometry(const rt::MeshDesc& a, const rt::MeshDesc& b) {
+  if (a.triangles != b.triangles || a.positions.size() != b.positions.size()) return false;
+  for (size_t i = 0; i < a.positions.size(); ++i)
+    if (a.positions[i].x != b.positions[i].x || a.positions[i].y != b.positions[i].y ||
+        a.positions[i].z != b.positions[i].z)
+      return false;
+  return true;
+}
+
+std::string file_safe(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  return s.substr(0, 40);
+}
+
+class Importer {
+ public:
+  Importer(const std::string& path, Report& report) : file_(path), report_(report) {}
+  ImportedScene run(int default_width);
+
+ private:
+  void walk(const aiNode* node, const Mat4& parent);
+  int course_mesh(unsigned ai_index, bool smooth);
+  int course_material(unsigned ai_index);
+  void add_object(const aiNode* node, unsigned ai_mesh, const Mat4& world);
+
+  std::string file_;
+  Report& report_;
+  const aiScene* ai_ = nullptr;
+  json gltf_;            // The file's glTF JSON, when it is glTF.
+  bool course_ = false;  // Written by rtconvert: extras.ceng795 present.
+  ImportedScene out_;
+  std::map<unsigned, int> mesh_of_ai_, material_of_ai_;
+  std::vector<MappedMaterial> mapped_;
+  std::map<std::string, const json*> node_extras_;
+  int smooth_guessed_ = 0;
+};
+
+int Importer::course_material(unsigned ai_index) {
+  auto it = material_of_ai_.find(ai_index);
+  if (it != material_of_ai_.end()) return it->second;
+  out_.scene.materials.push_back(mapped_[ai_index].material);
+  return material_of_ai_[ai_index] = static_cast<int>(out_.scene.materials.size()) - 1;
+}
+
+int Importer::course_mesh(unsigned ai_index, bool smooth) {
+  auto it = mesh_of_ai_.find(ai_index);
+  if (it != mesh_of_ai_.end()) return it->second;
+  rt::MeshDesc d = mesh_of(*ai_->mMeshes[ai_index]);
+  d.smooth = smooth;
+  // The same geometry under another name (glTF meshes split per material) is shared too.
+  for (size_t k = 0; k < out_.scene.meshes.size(); ++k)
+    if (out_.scene.meshes[k].smooth == smooth && same_geometry(out_.scene.meshes[k], d))
+      return mesh_of_ai_[ai_index] = static_cast<int>(k);
+  out_.scene.meshes.push_back(std::move(d));
+  out_.mesh_names.push_back(file_safe(ai_->mMeshes[ai_index]->mName.C_Str()));
+  return mesh_of_ai_[ai_index] = static_cast<int>(out_.scene.meshes.size()) - 1;
+}
+
+void Importer::add_object(const aiNode* node, unsigned ai_mesh, const Mat4& world) {
+  const aiMesh& m = *ai_->mMeshes[ai_mesh];
+  const std::string name = node->mName.C_Str();
+  if (!(m.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) {
+    report_.warn(file_ + ": mesh '" + m.mName.C_Str() + "': points and lines are not rendered");
+    return;
+  }
+  rt::ObjectDesc o;
+  o.element = "node '" + name + "'";
+  auto extras = node_extras_.find(name);
+  if (course_ && extras != node_extras_.end()) {
+    const json& e = *extras->second;
+    o.transform = mat4_from(e.at("matrix"));
+    o.motion = vec3d_from(e.at("motionBlur"));
+    o.material = e.at("material").get<int>();
+    if (e.at("kind") == "sphere") {
+      o.kind = rt::ObjectDesc::kSphere;
+    } else {
+      o.mesh = course_mesh(ai_mesh, e.at("smooth").get<bool>());
+    }
+    out_.scene.objects.push_back(o);
+    return;
+  }
+  const MappedMaterial& mat = mapped_[m.mMaterialIndex];
+  if (mat.emission.x > 0 || mat.emission.y > 0 || mat.emission.z > 0) {
+    AreaLight a;
+    if (parallelogram_light(m, world, mat.emission, a)) {
+      out_.scene.area_lights.push_back(a);
+      return;
+    }
+    report_.warn(file_ + ": node '" + name +
+                 "': emissive mesh is not a parallelogram: kept as geometry, emission dropped");
+  }
+  bool ok;
+  world.affine_inverse(&ok);
+  if (!ok) {
+    report_.warn(file_ + ": node '" + name + "': singular transform, node skipped");
+    return;
+  }
+  bool smooth = has_smooth_normals(m);
+  if (smooth && !mesh_of_ai_.count(ai_mesh)) ++smooth_guessed_;
+  o.mesh = course_mesh(ai_mesh, smooth);
+  o.material = course_material(m.mMaterialIndex);
+  o.transform = world;
+  out_.scene.objects.push_back(o);
+}
+
+void Importer::walk(const aiNode* node, const Mat4& parent) {
+  Mat4 world = parent * from_ai(node->mTransformation);
+  for (unsigned i = 0; i < node->mNumMeshes; ++i) add_object(node, node->mMeshes[i], world);
+  for (unsigned i = 0; i < node->mNumChildren; ++i) walk(node->mChildren[i], world);
+}
+
+ImportedScene Importer::run(int default_width) {
+  gltf_ = read_gltf_json(file_);
+  const json* scene_extras = nullptr;
+  if (gltf_.is_object() && gltf_.contains("scenes")) {
+    const json& sc = gltf_["scenes"][gltf_.value("scene", 0)];
+    if (sc.contains("extras") && sc["extras"].contains(kExtrasKey))
+      scene_extras = &sc["extras"][kExtrasKey];
+  }
+  course_ = scene_extras != nullptr;
+
+  Assimp::Importer importer;
+  // rtconvert's own files keep their vertices as written (bit-exact round trip); others are
+  // welded where position and normal agree (texture seams do not split a smooth mesh).
+  unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  if (!course_) {
+    flags |= aiProcess_JoinIdenticalVertices | aiProcess_RemoveComponent;
+    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_TEXCOORDS | aiComponent_COLORS |
+                                                            aiComponent_TANGENTS_AND_BITANGENTS);
+  }
+  ai_ = importer.ReadFile(file_, flags);
+  if (!ai_) throw ConvertError(file_ + ": " + importer.GetErrorString());
+  if (ai_->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
+    throw ConvertError(file_ + ": the file holds no complete scene (animation or skeleton only)");
+  if (ai_->HasAnimations())
+    report_.warn(file_ + ": " + std::to_string(ai_->mNumAnimations) +
+                 " animations ignored (the scene is taken at rest)");
+
+  for (unsigned i = 0; i < ai_->mNumMaterials; ++i)
+    mapped_.push_back(course_ ? MappedMaterial{}
+                              : map_material(*ai_->mMaterials[i], file_, report_));
+  rt::SceneDesc& s = out_.scene;
+  s.file = file_;
+  if (course_) {
+    settings_from_json(*scene_extras, s);
+    for (const json& a : scene_extras->value("areaLights", json::array()))
+      s.area_lights.push_back(area_light_from_json(a));
+    // Materials in the exporter's order (material0, material1, ...), by name.
+    std::map<int, Material> by_index;
+    for (const json& m : gltf_.value("materials", json::array()))
+      if (m.contains("extras") && m["extras"].contains(kExtrasKey)) {
+        std::string n = m.value("name", "");
+        if (n.rfind("material", 0) == 0)
+          by_index[std::stoi(n.substr(8))] = material_from_json(m["extras"][kExtrasKey]);
+      }
+    for (int i = 0; by_index.count(i); ++i) s.materials.push_back(by_index[i]);
+    // Pointers into gltf_ itself (value() would return a copy).
+    if (gltf_.contains("nodes"))
+      for (const json& n : gltf_["nodes"])
+        if (n.contains("extras") && n["extras"].contains(kExtrasKey))
+          node_extras_[n.value("name", "")] = &n["extras"][kExtrasKey];
+  }
+  walk(ai_->mRootNode, Mat4());
+  if (smooth_guessed_)
+    report_.warn(file_ + ": " + std::to_string(smooth_guessed_) +
+                 " meshes with smooth vertex normals: shadingMode=\"smooth\" (area-weighted "
+                 "normals replace the file's)");
+  if (s.objects.empty() && s.area_lights.empty())
+    throw ConvertError(file_ + ": no triangle geometry to render");
+  if (course_) {
+    for (const json& c : gltf_.value("cameras", json::array()))
+      if (c.contains("extras") && c["extras"].contains(kExtrasKey))
+        s.cameras.push_back(camera_from_json(c["extras"][kExtrasKey]));
+    if (gltf_.contains("extensions") && gltf_["extensions"].contains("KHR_lights_punctual"))
+      for (const json& l :
+           gltf_["extensions"]["KHR_lights_punctual"].value("lights", json::array()))
+        if (l.contains("extras") && l["extras"].contains(kExtrasKey))
+          s.point_lights.push_back(point_light_from_json(l["extras"][kExtrasKey]));
+  } else {
+    import_cameras(*ai_, file_, default_width, s, report_);
+    import_lights(*ai_, file_, gltf_.is_object(), s, report_);
+  }
+  add_defaults(file_, default_width, s, report_);
+  return std::move(out_);
+}
+
+}  // namespace
+
+ImportedScene import_with_assimp(const std::string& path, int default_width, Report& report) {
+  try {
+    return Importer(path, report).run(default_width);
+  } catch (const json::exception& e) {
+    throw ConvertError(path + ": glTF extras." + kExtrasKey + " malformed: " + e.what());
+  }
+}
+
+}  // namespace rtconvert
