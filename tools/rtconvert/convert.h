@@ -15,7 +15,12 @@ namespace rtconvert {
 // prints each on its own line, so nothing approximate happens silently.
 struct Report {
   std::vector<std::string> warnings;
-  void warn(const std::string& what) { warnings.push_back(what); }
+  void warn(const std::string& what) {
+    // Materials of the same name in one file would repeat their warning word for word.
+    for (const auto& w : warnings)
+      if (w == what) return;
+    warnings.push_back(what);
+  }
 };
 
 // Thrown for input that cannot be converted: one line naming the file and the feature.
@@ -29,9 +34,11 @@ struct ImportedScene {
   std::vector<std::string> mesh_names;  // Parallel to scene.meshes; may be empty.
 };
 
-// Import: any file Assimp reads. glTF files written by export_gltf carry the course's
-// exact values in `extras` (see course_extras.h) and come back bit for bit.
-ImportedScene import_with_assimp(const std::string& path, int default_width, Report& report);
+// Import: any file Assimp reads. glTF files written by export_with_assimp carry the
+// course's exact values in `extras` (see course_extras.h) and come back bit for bit, unless
+// `use_extras` is false (then they are read as any other tool's file would be).
+ImportedScene import_with_assimp(const std::string& path, int default_width, bool use_extras,
+                                 Report& report);
 
 // Writes the scene as course XML; meshes above a few triangles go to binary PLY files
 // beside it.

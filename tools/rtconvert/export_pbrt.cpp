@@ -107,6 +107,7 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
        << "#  - ShadowRayEpsilon " << s.shadow_epsilon << ", IntersectionTestEpsilon "
        << s.intersection_epsilon << "\n"
        << "#  - MaxRecursionDepth " << s.max_depth << " becomes the path depth\n"
+       << "#  - area lights are not visible in the course's images; in pbrt they are\n"
        << "#  - the square lens of ApertureSize becomes a disk of the same area\n"
        << "#  - cameras after the first (" << (s.cameras.empty() ? 0 : s.cameras.size() - 1)
        << "): pbrt renders one camera per file\n";
@@ -119,11 +120,12 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
     // pbrt's camera space is left-handed: mirror x so the image is not flipped.
     o << "Scale -1 1 1\nLookAt " << v(c.position) << "  " << v(at) << "  " << v(c.up) << "\n";
     // With a 90 degree field of view, screen coordinates are x/z on the image plane: the
-    // course's near plane divided by its distance is the screen window.
+    // course's near plane divided by its distance is the screen window (x mirrored, as the
+    // camera space is).
     double n = c.near_distance;
     std::string image = c.image_name.substr(0, c.image_name.find_last_of('.')) + ".exr";
-    o << "Camera \"perspective\" \"float fov\" 90 \"float screenwindow\" [ " << c.left / n << " "
-      << c.right / n << " " << c.bottom / n << " " << c.top / n << " ]";
+    o << "Camera \"perspective\" \"float fov\" 90 \"float screenwindow\" [ " << -c.right / n << " "
+      << -c.left / n << " " << c.bottom / n << " " << c.top / n << " ]";
     if (c.aperture > 0)
       o << " \"float lensradius\" " << c.aperture / std::sqrt(M_PI) << " \"float focaldistance\" "
         << c.focus_distance;
@@ -138,9 +140,9 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
   for (const AreaLight& a : s.area_lights) {
     Vec3d c{a.corner.x, a.corner.y, a.corner.z}, e1{a.edge1.x, a.edge1.y, a.edge1.z},
         e2{a.edge2.x, a.edge2.y, a.edge2.z};
-    // The course's area lights emit from both faces and are not seen: "interface".
+    // The course's area lights emit from both faces (pbrt also shows them to the camera).
     o << "AttributeBegin\n  AreaLightSource \"diffuse\" \"rgb L\" [ " << v(a.radiance)
-      << " ] \"bool twosided\" true\n  Material \"interface\"\n"
+      << " ] \"bool twosided\" true\n"
       << "  Shape \"bilinearmesh\" \"point3 P\" [ " << v(c) << " " << v(c + e1) << " " << v(c + e2)
       << " " << v(c + e1 + e2) << " ]\nAttributeEnd\n";
   }

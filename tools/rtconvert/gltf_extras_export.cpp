@@ -148,7 +148,8 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
     g["nodes"].push_back(camera_node(c, i));
   }
 
-  // Point lights: glTF's intensity is in candela; the course's is kept in extras.
+  // Point lights: glTF's intensity is in candela, and a Lambertian surface of albedo 1 at
+  // 1 m shows cd / pi, which is 255 on the course's scale; the exact value is in extras.
   json lights = json::array();
   for (size_t i = 0; i < s.point_lights.size(); ++i) {
     const PointLight& p = s.point_lights[i];
@@ -156,7 +157,7 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
     lights.push_back({{"type", "point"},
                       {"name", "light" + std::to_string(i)},
                       {"color", {p.intensity.x / peak, p.intensity.y / peak, p.intensity.z / peak}},
-                      {"intensity", peak},
+                      {"intensity", peak * M_PI / 255},
                       {"extras", {{kExtrasKey, point_light_to_json(p)}}}});
     scene["nodes"].push_back(g["nodes"].size());
     g["nodes"].push_back({{"name", "light" + std::to_string(i)},

@@ -78,7 +78,7 @@ std::string file_safe(std::string s) {
 class Importer {
  public:
   Importer(const std::string& path, Report& report) : file_(path), report_(report) {}
-  ImportedScene run(int default_width);
+  ImportedScene run(int default_width, bool use_extras);
 
  private:
   void walk(const aiNode* node, const Mat4& parent);
@@ -93,15 +93,24 @@ class Importer {
   bool course_ = false;  // Written by rtconvert: extras.ceng795 present.
   ImportedScene out_;
   std::map<unsigned, int> mesh_of_ai_, material_of_ai_;
-  std::vector<MappedMaterial> mapped_;
+  // Mapped when first used: files often carry unused (default) materials.
+  const MappedMaterial& mapped(unsigned ai_index);
+  std::map<unsigned, MappedMaterial> mapped_;
   std::map<std::string, const json*> node_extras_;
   int smooth_guessed_ = 0;
 };
 
+const MappedMaterial& Importer::mapped(unsigned ai_index) {
+  auto it = mapped_.find(ai_index);
+  if (it == mapped_.end())
+    it = mapped_.emplace(ai_index, map_material(*ai_->mMaterials[ai_index], file_, report_)).first;
+  return it->second;
+}
+
 int Importer::course_material(unsigned ai_index) {
   auto it = material_of_ai_.find(ai_index);
   if (it != material_of_ai_.end()) return it->second;
-  out_.scene.materials.push_back(mapped_[ai_index].material);
+  out_.scene.materials.push_back(mapped(ai_index).material);
   return material_of_ai_[ai_index] = static_cast<int>(out_.scene.materials.size()) - 1;
 }
 
@@ -142,7 +151,7 @@ void Importer::add_object(const aiNode* node, unsigned ai_mesh, const Mat4& worl
     out_.scene.objects.push_back(o);
     return;
   }
-  const MappedMaterial& mat = mapped_[m.mMaterialIndex];
+  const MappedMaterial& mat = mapped(m.mMaterialIndex);
   if (mat.emission.x > 0 || mat.emission.y > 0 || mat.emission.z > 0) {
     AreaLight a;
     if (parallelogram_light(m, world, mat.emission, a)) {
@@ -172,7 +181,7 @@ void Importer::walk(const aiNode* node, const Mat4& parent) {
   for (unsigned i = 0; i < node->mNumChildren; ++i) walk(node->mChildren[i], world);
 }
 
-ImportedScene Importer::run(int default_width) {
+ImportedScene Importer::run(int default_width, bool use_extras) {
   gltf_ = read_gltf_json(file_);
   const json* scene_extras = nullptr;
   if (gltf_.is_object() && gltf_.contains("scenes")) {
@@ -180,7 +189,7 @@ ImportedScene Importer::run(int default_width) {
     if (sc.contains("extras") && sc["extras"].contains(kExtrasKey))
       scene_extras = &sc["extras"][kExtrasKey];
   }
-  course_ = scene_extras != nullptr;
+  course_ = use_extras && scene_extras != nullptr;
 
   Assimp::Importer importer;
   // rtconvert's own files keep their vertices as written (bit-exact round trip); others are
@@ -199,9 +208,6 @@ ImportedScene Importer::run(int default_width) {
     report_.warn(file_ + ": " + std::to_string(ai_->mNumAnimations) +
                  " animations ignored (the scene is taken at rest)");
 
-  for (unsigned i = 0; i < ai_->mNumMaterials; ++i)
-    mapped_.push_back(course_ ? MappedMaterial{}
-                              : map_material(*ai_->mMaterials[i], file_, report_));
   rt::SceneDesc& s = out_.scene;
   s.file = file_;
   if (course_) {
@@ -249,9 +255,10 @@ ImportedScene Importer::run(int default_width) {
 
 }  // namespace
 
-ImportedScene import_with_assimp(const std::string& path, int default_width, Report& report) {
+ImportedScene import_with_assimp(const std::string& path, int default_width, bool use_extras,
+                                 Report& report) {
   try {
-    return Importer(path, report).run(default_width);
+    return Importer(path, report).run(default_width, use_extras);
   } catch (const json::exception& e) {
     throw ConvertError(path + ": glTF extras." + kExtrasKey + " malformed: " + e.what());
   }

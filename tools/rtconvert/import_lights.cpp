@@ -105,8 +105,9 @@ void import_cameras(const aiScene& ai, const std::string& file, int width, rt::S
       d.up = std::fabs(d.gaze.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0};
     double aspect = c.mAspect > 0 ? c.mAspect : 4.0 / 3.0;
     if (!(c.mAspect > 0)) report.warn(where + "no aspect ratio: 4:3 assumed");
-    // Assimp gives half the horizontal field of view.
-    d.right = std::tan(c.mHorizontalFOV);
+    // Assimp's header calls mHorizontalFOV half the angle, but its glTF, FBX and Collada
+    // readers store the whole angle (glTF: 2 atan(aspect tan(yfov / 2))); so do we.
+    d.right = std::tan(c.mHorizontalFOV / 2);
     d.left = -d.right;
     d.top = d.right / aspect;
     d.bottom = -d.top;

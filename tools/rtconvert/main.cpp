@@ -16,12 +16,14 @@ const char* kUsage =
     "  INPUT.(any format Assimp reads: obj gltf glb fbx ply dae 3ds ...) -> OUTPUT.xml   import\n"
     "  --width N   image width of cameras the importer makes (default 640)\n"
     "  --quiet     no warnings on stderr\n"
+    "  --no-extras import glTF without rtconvert's extras.ceng795 (as another tool's file)\n"
     "Exit status: 0 done, 1 input that cannot be converted (one line says why), 2 usage.\n";
 
 struct Options {
   std::string input, output;
   int width = 640;
   bool quiet = false;
+  bool use_extras = true;
 };
 
 [[noreturn]] void usage_error(const std::string& what) {
@@ -39,6 +41,8 @@ Options parse_args(int argc, char** argv) {
       std::exit(0);
     } else if (a == "--quiet") {
       o.quiet = true;
+    } else if (a == "--no-extras") {
+      o.use_extras = false;
     } else if (a == "--width") {
       if (i + 1 >= argc) usage_error("--width needs a value");
       char* end = nullptr;
@@ -94,7 +98,8 @@ int main(int argc, char** argv) {
       if (out != "xml")
         throw rtconvert::ConvertError(o.output + ": an import writes course XML (.xml), not '." +
                                       out + "'");
-      rtconvert::ImportedScene scene = rtconvert::import_with_assimp(o.input, o.width, report);
+      rtconvert::ImportedScene scene =
+          rtconvert::import_with_assimp(o.input, o.width, o.use_extras, report);
       rtconvert::write_course_xml(scene, o.output, report);
     }
   } catch (const std::exception& e) {

@@ -120,7 +120,7 @@ MappedMaterial map_material(const aiMaterial& m, const std::string& file, Report
       // Beckmann correspondence: exponent 2 / alpha^2 - 2 with alpha = roughness^2; the
       // specular colour fades with roughness as the lobe spreads.
       float a = std::max(roughness * roughness, 0.03f);
-      r.phong_exponent = 2 / (a * a) - 2;
+      r.phong_exponent = std::max(1.0f, 2 / (a * a) - 2);
       float s = 0.5f * (1 - roughness) * (1 - roughness);
       r.specular = make_float3(s, s, s);
       report.warn(where + "metallic-roughness (roughness " + std::to_string(roughness) +
