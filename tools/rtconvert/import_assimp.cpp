@@ -118,6 +118,9 @@ int Importer::course_mesh(unsigned ai_index, bool smooth) {
   auto it = mesh_of_ai_.find(ai_index);
   if (it != mesh_of_ai_.end()) return it->second;
   rt::MeshDesc d = mesh_of(*ai_->mMeshes[ai_index]);
+  for (const Vec3d& p : d.positions)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw ConvertError(file_ + ": " + d.element + ": a vertex position is not finite");
   d.smooth = smooth;
   // The same geometry under another name (glTF meshes split per material) is shared too.
   for (size_t k = 0; k < out_.scene.meshes.size(); ++k)
@@ -176,18 +179,39 @@ void Importer::add_object(const aiNode* node, unsigned ai_mesh, const Mat4& worl
 }
 
 void Importer::walk(const aiNode* node, const Mat4& parent) {
-  Mat4 world = parent * from_ai(node->mTransformation);
+  Mat4 local = from_ai(node->mTransformation);
+  // Some writers leave float noise in the last row (0 0 0 0.9999999); the course's
+  // transforms are affine, so that is cleaned, and a truly projective matrix is refused.
+  for (int c = 0; c < 4; ++c) {
+    if (std::fabs(local(3, c) - (c == 3)) > 1e-4)
+      throw ConvertError(file_ + ": node '" + node->mName.C_Str() +
+                         "': projective transform (last row not 0 0 0 1)");
+    local(3, c) = c == 3;
+  }
+  Mat4 world = parent * local;
   for (unsigned i = 0; i < node->mNumMeshes; ++i) add_object(node, node->mMeshes[i], world);
   for (unsigned i = 0; i < node->mNumChildren; ++i) walk(node->mChildren[i], world);
 }
 
 ImportedScene Importer::run(int default_width, bool use_extras) {
-  gltf_ = read_gltf_json(file_);
+  // Only rtconvert's own glTF 2.0 files matter here; anything else (glTF 1.0, a broken
+  // file) is left to Assimp, whose message then names the problem.
+  try {
+    gltf_ = read_gltf_json(file_);
+  } catch (const ConvertError&) {
+    gltf_ = nullptr;
+  }
   const json* scene_extras = nullptr;
-  if (gltf_.is_object() && gltf_.contains("scenes")) {
-    const json& sc = gltf_["scenes"][gltf_.value("scene", 0)];
-    if (sc.contains("extras") && sc["extras"].contains(kExtrasKey))
-      scene_extras = &sc["extras"][kExtrasKey];
+  if (gltf_.is_object() && gltf_.contains("scenes") && gltf_["scenes"].is_array()) {
+    size_t at = gltf_.contains("scene") && gltf_["scene"].is_number_unsigned()
+                    ? gltf_["scene"].get<size_t>()
+                    : 0;
+    if (at < gltf_["scenes"].size()) {
+      json& sc = gltf_["scenes"][at];  // A reference into gltf_, which outlives the import.
+      if (sc.is_object() && sc.contains("extras") && sc["extras"].is_object() &&
+          sc["extras"].contains(kExtrasKey))
+        scene_extras = &sc["extras"][kExtrasKey];
+    }
   }
   course_ = use_extras && scene_extras != nullptr;
 
@@ -203,7 +227,8 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
   ai_ = importer.ReadFile(file_, flags);
   if (!ai_) throw ConvertError(file_ + ": " + importer.GetErrorString());
   if (ai_->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
-    throw ConvertError(file_ + ": the file holds no complete scene (animation or skeleton only)");
+    throw ConvertError(
+        file_ + ": no meshes (the file holds only cameras, lights, animations or a skeleton)");
   if (ai_->HasAnimations())
     report_.warn(file_ + ": " + std::to_string(ai_->mNumAnimations) +
                  " animations ignored (the scene is taken at rest)");
