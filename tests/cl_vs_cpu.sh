@@ -29,18 +29,10 @@ if ! "$rt" --list-devices > /dev/null 2>&1; then
   exit 77
 fi
 
-# The camera this test renders (--camera N among the flags, else the first): its
-# resolution and sample count decide the reduced size.
-camera=0
-for ((i = 0; i < ${#flags[@]}; ++i)); do
-  [ "${flags[$i]}" = "--camera" ] && camera="${flags[$((i + 1))]}"
-done
-res=($(grep -o '<ImageResolution>[^<]*' "$scene" | sed -n "$((camera + 1))p" | cut -d'>' -f2))
-spp=$(grep -o '<NumSamples>[^<]*' "$scene" | sed -n "$((camera + 1))p" | cut -d'>' -f2)
-spp=${spp:-1}
+# The camera this test renders: its resolution and sample count decide the reduced size.
+source "$(dirname "$0")/scene_camera.sh"
+scene_camera "$scene" "${flags[@]}"
 if [ "$mode" = quick ]; then
-  scale=$(awk -v w="${res[0]}" -v h="${res[1]}" 'BEGIN { s = sqrt(4096 / (w * h));
-    printf "%.6f", s < 1 ? s : 1 }')
   size=(--resolution-scale "$scale" --spp 24)
 else
   size=()

@@ -68,6 +68,15 @@ for out in box.glb box.obj2.obj box.pbrt; do
 done
 grep -q 'AreaLightSource "diffuse"' box.pbrt || fail "pbrt: no area light"
 "$conv" box.glb again.xml --quiet || fail "import of box.glb"
+cmp -s <(grep -v plyFile box.xml) <(grep -v plyFile again.xml) ||
+  fail "box.xml -> box.glb -> again.xml changed the scene"
+# Read as another tool's glTF: the camera comes from glTF's own camera node and the area
+# light, which glTF cannot hold, is missing (so a default light is added, with a warning).
+"$conv" box.glb native.xml --no-extras 2> native.txt || fail "import of box.glb --no-extras"
+grep -q 'no camera' native.txt && fail "--no-extras: the glTF camera was not read"
+grep -q 'no light: a default' native.txt || fail "--no-extras: expected the default light"
+grep -A5 '<Camera ' native.xml | grep -q '<NearPlane>-0.48529' ||
+  fail "--no-extras: the camera's field of view changed"
 
 expect_error() {  # WHAT OUTPUT ARGS...
   local what="$1" output="$2"

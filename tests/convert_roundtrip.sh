@@ -16,13 +16,8 @@ if [ ! -f "$scene" ]; then
   echo "SKIP: $scene is not present (the course's scenes live in ../shared/scenes)"
   exit 77
 fi
-camera=0
-for ((i = 0; i < ${#flags[@]}; ++i)); do
-  [ "${flags[$i]}" = "--camera" ] && camera="${flags[$((i + 1))]}"
-done
-res=($(grep -o '<ImageResolution>[^<]*' "$scene" | sed -n "$((camera + 1))p" | cut -d'>' -f2))
-scale=$(awk -v w="${res[0]}" -v h="${res[1]}" 'BEGIN { s = sqrt(4096 / (w * h));
-  printf "%.6f", s < 1 ? s : 1 }')
+source "$(dirname "$0")/scene_camera.sh"
+scene_camera "$scene" "${flags[@]}"
 
 rm -rf "$work"
 mkdir -p "$work/original" "$work/roundtrip"

@@ -271,7 +271,7 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
         if (l.contains("extras") && l["extras"].contains(kExtrasKey))
           s.point_lights.push_back(point_light_from_json(l["extras"][kExtrasKey]));
   } else {
-    import_cameras(*ai_, file_, default_width, s, report_);
+    import_cameras(*ai_, file_, gltf_.is_object(), default_width, s, report_);
     import_lights(*ai_, file_, gltf_.is_object(), s, report_);
   }
   add_defaults(file_, default_width, s, report_);

@@ -89,8 +89,8 @@ bool parallelogram_light(const aiMesh& m, const Mat4& world, float3 radiance, Ar
   return false;
 }
 
-void import_cameras(const aiScene& ai, const std::string& file, int width, rt::SceneDesc& s,
-                    Report& report) {
+void import_cameras(const aiScene& ai, const std::string& file, bool gltf, int width,
+                    rt::SceneDesc& s, Report& report) {
   for (unsigned i = 0; i < ai.mNumCameras; ++i) {
     const aiCamera& c = *ai.mCameras[i];
     const std::string where = file + ": camera '" + c.mName.C_Str() + "': ";
@@ -105,11 +105,17 @@ void import_cameras(const aiScene& ai, const std::string& file, int width, rt::S
       d.up = std::fabs(d.gaze.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0};
     double aspect = c.mAspect > 0 ? c.mAspect : 4.0 / 3.0;
     if (!(c.mAspect > 0)) report.warn(where + "no aspect ratio: 4:3 assumed");
-    // Assimp's header calls mHorizontalFOV half the angle, but its glTF, FBX and Collada
-    // readers store the whole angle (glTF: 2 atan(aspect tan(yfov / 2))); so do we.
-    d.right = std::tan(c.mHorizontalFOV / 2);
+    // Assimp's header calls mHorizontalFOV half the angle, but its FBX and Collada readers
+    // store the whole angle, and its glTF 2.0 reader (5.2) stores yfov * aspectRatio, from
+    // which glTF's own yfov comes back exactly.
+    if (gltf) {
+      d.top = std::tan(c.mHorizontalFOV / aspect / 2);
+      d.right = d.top * aspect;
+    } else {
+      d.right = std::tan(c.mHorizontalFOV / 2);
+      d.top = d.right / aspect;
+    }
     d.left = -d.right;
-    d.top = d.right / aspect;
     d.bottom = -d.top;
     d.width = width;
     d.height = std::max(1, static_cast<int>(std::lround(width / aspect)));

@@ -12,8 +12,9 @@ namespace rtconvert {
 // space) becomes an area light emitting `radiance`; false when the mesh is anything else.
 bool parallelogram_light(const aiMesh& m, const rt::Mat4& world, float3 radiance, AreaLight& out);
 
-void import_cameras(const aiScene& ai, const std::string& file, int width, rt::SceneDesc& s,
-                    Report& report);
+// `gltf`: the file is glTF 2.0, whose field of view Assimp stores its own way.
+void import_cameras(const aiScene& ai, const std::string& file, bool gltf, int width,
+                    rt::SceneDesc& s, Report& report);
 // `photometric`: glTF's KHR_lights_punctual units (candela, lux); other formats' light
 // colours are read as the irradiance they give at the scene's centre.
 void import_lights(const aiScene& ai, const std::string& file, bool photometric, rt::SceneDesc& s,
