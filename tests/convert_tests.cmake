@@ -27,6 +27,9 @@ foreach(line IN LISTS rt_course_lines)
                    ${CMAKE_CURRENT_BINARY_DIR}/convert/${name} ${fields})
   set_tests_properties(convert.${name} PROPERTIES LABELS convert SKIP_RETURN_CODE 77)
 endforeach()
+add_executable(convert_tests convert_test.cpp)
+target_link_libraries(convert_tests PRIVATE rtconvert_lib GTest::gtest_main)
+gtest_discover_tests(convert_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX convert. PROPERTIES LABELS convert)
 add_test(NAME convert.cli COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/convert_cli.sh
                                   $<TARGET_FILE:rtconvert> $<TARGET_FILE:raytracer>
                                   ${CMAKE_CURRENT_BINARY_DIR}/convert/cli)

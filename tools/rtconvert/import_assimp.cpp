@@ -146,6 +146,9 @@ void Importer::add_object(const aiNode* node, unsigned ai_mesh, const Mat4& worl
     o.transform = mat4_from(e.at("matrix"));
     o.motion = vec3d_from(e.at("motionBlur"));
     o.material = e.at("material").get<int>();
+    if (o.material < 0 || o.material >= static_cast<int>(out_.scene.materials.size()))
+      throw ConvertError(file_ + ": node '" + name + "': extras." + kExtrasKey + ".material " +
+                         std::to_string(o.material) + " names no material");
     if (e.at("kind") == "sphere") {
       o.kind = rt::ObjectDesc::kSphere;
     } else {
@@ -247,7 +250,16 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
         if (n.rfind("material", 0) == 0)
           by_index[std::stoi(n.substr(8))] = material_from_json(m["extras"][kExtrasKey]);
       }
-    for (int i = 0; by_index.count(i); ++i) s.materials.push_back(by_index[i]);
+    // A material another tool dropped leaves a gap: a default takes its place.
+    int count = by_index.empty() ? 0 : by_index.rbegin()->first + 1;
+    for (int i = 0; i < count; ++i) {
+      if (!by_index.count(i))
+        report_.warn(file_ + ": material" + std::to_string(i) + " is missing: a default one");
+      Material grey{};
+      grey.diffuse = make_float3(0.8f, 0.8f, 0.8f);
+      grey.phong_exponent = grey.refraction_index = 1;
+      s.materials.push_back(by_index.count(i) ? by_index[i] : grey);
+    }
     // Pointers into gltf_ itself (value() would return a copy).
     if (gltf_.contains("nodes"))
       for (const json& n : gltf_["nodes"])
