@@ -49,6 +49,10 @@ void write_course_xml(const ImportedScene& in, const std::string& xml_path, Repo
 void export_with_assimp(const rt::SceneDesc& scene, const std::string& path,
                         const std::string& format, Report& report);
 
+// Writes `content` to a temporary file beside `path` and renames it: an interrupted or
+// failed conversion never leaves a half-written file under the output's name.
+void write_file_atomically(const std::string& path, const std::string& content);
+
 // Export to pbrt-v4's text format; what does not map is listed in a comment at the top.
 void export_pbrt(const rt::SceneDesc& scene, const std::string& path, Report& report);
 

@@ -185,9 +185,7 @@ void rewrite_glb_json(const std::string& path, const json& gltf) {
   put(out, static_cast<uint32_t>(text.size()));
   put(out, kChunkJson);
   out += text + rest;
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  f.write(out.data(), static_cast<std::streamsize>(out.size()));
-  if (!f) throw ConvertError(path + ": write failed");
+  write_file_atomically(path, out);
 }
 
 }  // namespace rtconvert

@@ -7,6 +7,7 @@
 #include <assimp/Exporter.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "convert.h"
@@ -134,12 +135,18 @@ void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const s
   if (exporter.Export(scene, format, path) != AI_SUCCESS) {
     std::string err = exporter.GetErrorString();
     delete scene;
+    std::remove(path.c_str());
     throw ConvertError(path + ": Assimp export (" + format + ") failed: " + err);
   }
   delete scene;
 
   if (format == "glb2") {
-    add_course_data_to_glb(s, path, report);
+    try {
+      add_course_data_to_glb(s, path, report);
+    } catch (...) {
+      std::remove(path.c_str());  // Not a .glb without its cameras and lights.
+      throw;
+    }
     return;
   }
   // OBJ and MTL: what they cannot hold, said once.

@@ -3,7 +3,6 @@
 // extras (Blinn-Phong specular, ambient light, background seen by camera rays, epsilons)
 // do not, and the file's first lines list what was left out.
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -171,9 +170,7 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
     }
     o << "AttributeEnd\n";
   }
-  std::ofstream f(path);
-  f << o.str();
-  if (!f) throw ConvertError(path + ": cannot write the pbrt file");
+  write_file_atomically(path, o.str());
 }
 
 }  // namespace rtconvert

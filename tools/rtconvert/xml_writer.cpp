@@ -179,9 +179,10 @@ void write_course_xml(const ImportedScene& in, const std::string& xml_path, Repo
         x << "        " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
       x << "      </Faces>\n";
     } else {
-      std::string name = in.mesh_names.size() == s.meshes.size() && !in.mesh_names[o.mesh].empty()
-                             ? in.mesh_names[o.mesh]
-                             : "mesh" + std::to_string(o.mesh + 1);
+      // The index keeps the names unique: files may give several meshes one name.
+      std::string name = "mesh" + std::to_string(o.mesh + 1);
+      if (in.mesh_names.size() == s.meshes.size() && !in.mesh_names[o.mesh].empty())
+        name += "_" + in.mesh_names[o.mesh];
       std::string file = stem + "_" + name + ".ply";
       write_ply(mesh, (dir / file).string());
       x << "      <Faces plyFile=\"" << file << "\"/>\n";
@@ -189,10 +190,24 @@ void write_course_xml(const ImportedScene& in, const std::string& xml_path, Repo
     x << "    </Mesh>\n";
   }
   x << "  </Objects>\n</Scene>\n";
-  std::ofstream out(xml_path);
-  out << x.str();
-  if (!out) throw ConvertError(xml_path + ": cannot write the scene file");
+  write_file_atomically(xml_path, x.str());
   (void)report;
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw ConvertError(path + ": cannot write");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw ConvertError(path + ": cannot write (rename failed)");
+  }
 }
 
 }  // namespace rtconvert
