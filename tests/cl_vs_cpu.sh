@@ -20,17 +20,14 @@ rt="$1" cmp="$2" scene="$3" work="$4" mode="$5"
 shift 5
 flags=("$@")
 
-if [ ! -f "$scene" ]; then
-  echo "SKIP: $scene is not present (the course's scenes live in ../shared/scenes)"
-  exit 77
-fi
+source "$(dirname "$0")/scene_camera.sh"
+skip_unless_present "$scene"
 if ! "$rt" --list-devices > /dev/null 2>&1; then
   echo "SKIP: no OpenCL device"
   exit 77
 fi
 
 # The camera this test renders: its resolution and sample count decide the reduced size.
-source "$(dirname "$0")/scene_camera.sh"
 scene_camera "$scene" "${flags[@]}"
 if [ "$mode" = quick ]; then
   size=(--resolution-scale "$scale" --spp 24)

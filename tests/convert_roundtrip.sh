@@ -12,11 +12,8 @@ rt="$1" conv="$2" cmp="$3" scene="$4" work="$5"
 shift 5
 flags=("$@")
 
-if [ ! -f "$scene" ]; then
-  echo "SKIP: $scene is not present (the course's scenes live in ../shared/scenes)"
-  exit 77
-fi
 source "$(dirname "$0")/scene_camera.sh"
+skip_unless_present "$scene"
 scene_camera "$scene" "${flags[@]}"
 
 rm -rf "$work"

@@ -1,4 +1,14 @@
-# Sourced by the scene tests (cl_vs_cpu.sh, convert_roundtrip.sh). For the camera a test
+# Sourced by the scene tests (cl_vs_cpu.sh, convert_roundtrip.sh).
+
+# Exits with 77 (CTest's skip) when the course's scene file is not there.
+skip_unless_present() {
+  if [ ! -f "$1" ]; then
+    echo "SKIP: $1 is not present (the course's scenes live in ../shared/scenes)"
+    exit 77
+  fi
+}
+
+# For the camera a test
 # renders (--camera N among the raytracer flags, else the first), sets `camera`, `res`
 # (width height), `spp` (its NumSamples, 1 when absent) and `scale`, the
 # --resolution-scale that gives about 4096 pixels of the same view.

@@ -28,6 +28,33 @@ std::string num(float v) {
   return buf;
 }
 
+// The five characters XML reserves, escaped (an image name may hold '&').
+std::string xml_text(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
 std::string vec(Vec3d v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
 std::string vec(float3 v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
 
@@ -89,7 +116,7 @@ void write_camera(std::ostream& x, const rt::CameraDesc& c, size_t id) {
   if (c.aperture > 0)
     x << "      <ApertureSize>" << num(c.aperture) << "</ApertureSize>\n"
       << "      <FocusDistance>" << num(c.focus_distance) << "</FocusDistance>\n";
-  x << "      <ImageName>" << c.image_name << "</ImageName>\n    </Camera>\n";
+  x << "      <ImageName>" << xml_text(c.image_name) << "</ImageName>\n    </Camera>\n";
 }
 
 void write_lights(std::ostream& x, const rt::SceneDesc& s) {
@@ -185,7 +212,7 @@ void write_course_xml(const ImportedScene& in, const std::string& xml_path, Repo
         name += "_" + in.mesh_names[o.mesh];
       std::string file = stem + "_" + name + ".ply";
       write_ply(mesh, (dir / file).string());
-      x << "      <Faces plyFile=\"" << file << "\"/>\n";
+      x << "      <Faces plyFile=\"" << xml_text(file) << "\"/>\n";
     }
     x << "    </Mesh>\n";
   }
