@@ -99,10 +99,9 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
     native_material(m, s.materials[i]);
     m["extras"][kExtrasKey] = material_to_json(s.materials[i]);
   }
-  json& used = g["extensionsUsed"];
-  if (used.is_array())
-    used.erase(std::remove(used.begin(), used.end(), "KHR_materials_pbrSpecularGlossiness"),
-               used.end());
+  // Assimp lists extensions it did not use (volume, FB_ngon_encoding for our triangles);
+  // the list is rebuilt from what the file holds.
+  g.erase("extensionsUsed");
   for (const char* ext :
        {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"})
     for (const json& m : g["materials"])
