@@ -70,11 +70,13 @@ grep -q 'AreaLightSource "diffuse"' box.pbrt || fail "pbrt: no area light"
 "$conv" box.glb again.xml --quiet || fail "import of box.glb"
 cmp -s <(grep -v plyFile box.xml) <(grep -v plyFile again.xml) ||
   fail "box.xml -> box.glb -> again.xml changed the scene"
-# Read as another tool's glTF: the camera comes from glTF's own camera node and the area
-# light, which glTF cannot hold, is missing (so a default light is added, with a warning).
+# Read as another tool's glTF: the camera comes from glTF's own camera node, the area
+# light from its emissive quad (KHR_materials_emissive_strength).
 "$conv" box.glb native.xml --no-extras 2> native.txt || fail "import of box.glb --no-extras"
 grep -q 'no camera' native.txt && fail "--no-extras: the glTF camera was not read"
-grep -q 'no light: a default' native.txt || fail "--no-extras: expected the default light"
+grep -q 'no light' native.txt && fail "--no-extras: the area light was not read"
+grep -A4 '<AreaLight' native.xml | grep -q '<Intensity>255 255 255' ||
+  fail "--no-extras: the emissive quad did not come back as an area light of radiance 255"
 grep -A5 '<Camera ' native.xml | grep -q '<NearPlane>-0.48529' ||
   fail "--no-extras: the camera's field of view changed"
 

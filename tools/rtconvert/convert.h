@@ -11,6 +11,9 @@
 
 namespace rtconvert {
 
+// Radiance 1 (white, glTF's emission 1, OBJ's Ke 1) on the course's 0-255 scale.
+inline constexpr float kRadianceScale = 255.0f;
+
 // Collects the warnings of one conversion (approximate mappings, dropped features); main
 // prints each on its own line, so nothing approximate happens silently.
 struct Report {

@@ -84,6 +84,29 @@ aiMaterial* make_material(const Material& mat, size_t index) {
   return m;
 }
 
+// Emission as OBJ's Ke and glTF's emissive colour hold it: radiance / 255, so that 1 is
+// white (the glTF JSON then splits it into a factor and KHR_materials_emissive_strength).
+aiMaterial* make_emitter(const AreaLight& a, size_t index) {
+  aiMaterial* m = new aiMaterial;
+  aiString name(area_light_name(index));
+  m->AddProperty(&name, AI_MATKEY_NAME);
+  aiColor3D black(0, 0, 0), ke(a.radiance.x / kRadianceScale, a.radiance.y / kRadianceScale,
+                               a.radiance.z / kRadianceScale);
+  m->AddProperty(&black, 1, AI_MATKEY_COLOR_DIFFUSE);
+  m->AddProperty(&ke, 1, AI_MATKEY_COLOR_EMISSIVE);
+  return m;
+}
+
+// The parallelogram as two triangles (corner, corner + e1, corner + e1 + e2, corner + e2).
+rt::MeshDesc light_quad(const AreaLight& a) {
+  rt::MeshDesc m;
+  rt::Vec3d c{a.corner.x, a.corner.y, a.corner.z}, e1{a.edge1.x, a.edge1.y, a.edge1.z},
+      e2{a.edge2.x, a.edge2.y, a.edge2.z};
+  m.positions = {c, c + e1, c + e1 + e2, c + e2};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return m;
+}
+
 aiMatrix4x4 to_ai(const rt::Mat4& t) {
   aiMatrix4x4 a;
   for (int r = 0; r < 4; ++r)
@@ -97,10 +120,13 @@ void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const s
                         Report& report) {
   aiScene* scene = new aiScene;
   scene->mRootNode = new aiNode("root");
-  scene->mNumMaterials = static_cast<unsigned>(s.materials.size());
+  // The course's materials, then one emissive material per area light.
+  scene->mNumMaterials = static_cast<unsigned>(s.materials.size() + s.area_lights.size());
   scene->mMaterials = new aiMaterial*[scene->mNumMaterials];
   for (size_t i = 0; i < s.materials.size(); ++i)
     scene->mMaterials[i] = make_material(s.materials[i], i);
+  for (size_t i = 0; i < s.area_lights.size(); ++i)
+    scene->mMaterials[s.materials.size() + i] = make_emitter(s.area_lights[i], i);
 
   const rt::MeshDesc sphere = unit_sphere();
   std::map<std::pair<int, int>, unsigned> pair_mesh;  // (mesh or -1 for sphere, material)
@@ -122,6 +148,17 @@ void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const s
     n->mTransformation = to_ai(o.transform);
     n->mNumMeshes = 1;
     n->mMeshes = new unsigned[1]{it->second};
+    nodes.push_back(n);
+  }
+  // Area lights as emissive quads, so that other tools see them (and read them back as
+  // lights: rtconvert's importer turns emissive parallelograms into area lights).
+  for (size_t i = 0; i < s.area_lights.size(); ++i) {
+    aiNode* n = new aiNode(area_light_name(i));
+    n->mParent = scene->mRootNode;
+    n->mNumMeshes = 1;
+    n->mMeshes = new unsigned[1]{static_cast<unsigned>(meshes.size())};
+    meshes.push_back(make_mesh(light_quad(s.area_lights[i]),
+                               static_cast<unsigned>(s.materials.size() + i), area_light_name(i)));
     nodes.push_back(n);
   }
   scene->mNumMeshes = static_cast<unsigned>(meshes.size());
@@ -157,8 +194,9 @@ void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const s
   }
   for (const auto& m : s.materials) special += m.type != RT_MATERIAL_PLAIN;
   report.warn(path + ": OBJ has no cameras or lights: " + std::to_string(s.cameras.size()) +
-              " cameras, " + std::to_string(s.point_lights.size()) + " point and " +
-              std::to_string(s.area_lights.size()) + " area lights not written");
+              " cameras and " + std::to_string(s.point_lights.size()) +
+              " point lights not written; " + std::to_string(s.area_lights.size()) +
+              " area lights written as emissive quads (Ke = radiance / 255)");
   report.warn(path + ": OBJ has no instances or transforms: " + std::to_string(s.objects.size()) +
               " objects written as world-space copies");
   if (spheres)

@@ -89,7 +89,23 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
     scene["extras"][kExtrasKey]["areaLights"].push_back(area_light_to_json(a));
   if (!s.area_lights.empty())
     report.warn(path + ": glTF has no area lights: " + std::to_string(s.area_lights.size()) +
-                " kept in extras only (other viewers do not see them)");
+                " written as emissive quads (visible, unlike the course's), exact in extras");
+  // Emission above 1 needs KHR_materials_emissive_strength: the factor keeps the colour.
+  for (size_t i = 0; i < s.area_lights.size(); ++i) {
+    int at = index_by_name(g["materials"], area_light_name(i));
+    if (at < 0) throw ConvertError(path + ": Assimp dropped material " + area_light_name(i));
+    const float3 r = s.area_lights[i].radiance;
+    double peak = std::max({r.x, r.y, r.z, 1e-30f});
+    json& m = g["materials"][at];
+    m.erase("extensions");
+    m["pbrMetallicRoughness"] = {{"baseColorFactor", {0.0, 0.0, 0.0, 1.0}},
+                                 {"metallicFactor", 0.0}};
+    m["emissiveFactor"] = {r.x / peak, r.y / peak, r.z / peak};
+    m["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = peak / kRadianceScale;
+    m["doubleSided"] = true;
+    int node = index_by_name(g["nodes"], area_light_name(i));
+    if (node >= 0) g["nodes"][node]["extras"][kExtrasKey] = {{"kind", "areaLight"}, {"light", i}};
+  }
 
   for (size_t i = 0; i < s.materials.size(); ++i) {
     int at = index_by_name(g["materials"], material_name(i));
@@ -102,8 +118,8 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
   // Assimp lists extensions it did not use (volume, FB_ngon_encoding for our triangles);
   // the list is rebuilt from what the file holds.
   g.erase("extensionsUsed");
-  for (const char* ext :
-       {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"})
+  for (const char* ext : {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume",
+                          "KHR_materials_emissive_strength"})
     for (const json& m : g["materials"])
       if (m.contains("extensions") && m["extensions"].contains(ext)) add_extension_used(g, ext);
 
@@ -156,7 +172,7 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
     lights.push_back({{"type", "point"},
                       {"name", "light" + std::to_string(i)},
                       {"color", {p.intensity.x / peak, p.intensity.y / peak, p.intensity.z / peak}},
-                      {"intensity", peak * M_PI / 255},
+                      {"intensity", peak * M_PI / kRadianceScale},
                       {"extras", {{kExtrasKey, point_light_to_json(p)}}}});
     scene["nodes"].push_back(g["nodes"].size());
     g["nodes"].push_back({{"name", "light" + std::to_string(i)},

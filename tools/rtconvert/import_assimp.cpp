@@ -102,9 +102,23 @@ class Importer {
 
 const MappedMaterial& Importer::mapped(unsigned ai_index) {
   auto it = mapped_.find(ai_index);
-  if (it == mapped_.end())
-    it = mapped_.emplace(ai_index, map_material(*ai_->mMaterials[ai_index], file_, report_)).first;
-  return it->second;
+  if (it != mapped_.end()) return it->second;
+  const aiMaterial& m = *ai_->mMaterials[ai_index];
+  MappedMaterial out = map_material(m, file_, report_);
+  // Assimp 5.2 does not read KHR_materials_emissive_strength (emission above 1): from the
+  // JSON, by the material's name.
+  float unused;
+  if (gltf_.is_object() && gltf_.contains("materials") && gltf_["materials"].is_array() &&
+      m.Get(AI_MATKEY_EMISSIVE_INTENSITY, unused) != AI_SUCCESS)
+    for (const json& g : gltf_["materials"])
+      if (g.is_object() && g.value("name", "") == out.name && g.contains("extensions") &&
+          g["extensions"].contains("KHR_materials_emissive_strength")) {
+        float k =
+            g["extensions"]["KHR_materials_emissive_strength"].value("emissiveStrength", 1.0f);
+        out.emission = make_float3(out.emission.x * k, out.emission.y * k, out.emission.z * k);
+        break;
+      }
+  return mapped_.emplace(ai_index, out).first->second;
 }
 
 int Importer::course_material(unsigned ai_index) {
@@ -143,6 +157,7 @@ void Importer::add_object(const aiNode* node, unsigned ai_mesh, const Mat4& worl
   auto extras = node_extras_.find(name);
   if (course_ && extras != node_extras_.end()) {
     const json& e = *extras->second;
+    if (e.at("kind") == "areaLight") return;  // The scene's extras hold the exact light.
     o.transform = mat4_from(e.at("matrix"));
     o.motion = vec3d_from(e.at("motionBlur"));
     o.material = e.at("material").get<int>();

@@ -9,7 +9,7 @@ namespace {
 using rt::Mat4;
 using rt::Vec3d;
 
-constexpr double kScale = 255.0;  // Radiance 1 (white) on the course's 0-255 scale.
+constexpr double kScale = kRadianceScale;
 
 Vec3d v3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 Vec3d v3(const float3& v) { return {v.x, v.y, v.z}; }

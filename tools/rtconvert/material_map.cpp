@@ -8,9 +8,6 @@
 namespace rtconvert {
 namespace {
 
-// Radiance of emission 1 on the course's 0-255 scale.
-constexpr float kEmissionScale = 255.0f;
-
 struct Props {
   const aiMaterial& m;
   bool colour(const char* key, unsigned type, unsigned index, float3& out) const {
@@ -72,7 +69,7 @@ MappedMaterial map_material(const aiMaterial& m, const std::string& file, Report
       break;
     }
   if (p.colour(AI_MATKEY_COLOR_EMISSIVE, emissive) && peak(emissive) > 0)
-    out.emission = scale(emissive, emissive_strength * kEmissionScale);
+    out.emission = scale(emissive, emissive_strength * kRadianceScale);
 
   const bool pbr = has_metallic || has_roughness;
   if (transmission > 0 || opacity < 1) {
