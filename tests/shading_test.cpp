@@ -14,7 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "cl/materials.h"
+#include "cl/material/blinn_phong.h"
+#include "cl/material/fresnel.h"
 
 namespace rt {
 namespace {
