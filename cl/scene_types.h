@@ -33,13 +33,15 @@ typedef struct Light {
   float3 position;  // Point: the light's position. Area: the parallelogram's corner.
   float3 edge1;     // Area: the points are position + s * edge1 + t * edge2, s, t in [0, 1).
   float3 edge2;
-  float3 normal;    // Area: unit normal (the light emits from both faces).
-  float3 emission;  // Point: intensity (power per unit solid angle). Area: radiance.
-  float area;       // Area: |edge1 x edge2|.
+  float3 normal;                 // Area: unit normal (the light emits from both faces).
+  float3 emission;               // Point: intensity (power per unit solid angle). Area: radiance.
+  float area;                    // Area: |edge1 x edge2|.
+  float param0, param1, param2;  // Type-specific scalars (for example a spot's cone angles).
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;
   int type;
+  int index;  // Type-specific index (for example a texture or an emitting instance).
   int pad0;
 } Light;
 

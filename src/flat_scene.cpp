@@ -11,7 +11,7 @@ namespace rt {
 // C++ and OpenCL C must agree on every byte of the shared structs.
 static_assert(sizeof(float3) == 16 && alignof(float3) == 16, "float3 must match OpenCL");
 static_assert(sizeof(Material) == 112, "Material layout");
-static_assert(sizeof(Light) == 96, "Light layout");
+static_assert(sizeof(Light) == 112, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
 static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
