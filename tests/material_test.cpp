@@ -153,5 +153,15 @@ TEST(MaterialScatter, DielectricChoiceFollowsOneRayAtFullWeight) {
   EXPECT_NEAR(reflected, expect, 5 * std::sqrt(expect));
 }
 
+TEST(RayTree, PushingBeyondTheStackFailsAnAssertionInDebugBuilds) {
+#ifdef NDEBUG
+  GTEST_SKIP() << "RT_ASSERT is empty in release builds (NDEBUG); configure a Debug build";
+#else
+  RayStack stack;
+  stack.size = RT_TASK_STACK;
+  EXPECT_DEATH(PushRay(&stack, Parent(1)), "");
+#endif
+}
+
 }  // namespace
 }  // namespace rt
