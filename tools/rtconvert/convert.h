@@ -7,12 +7,33 @@
 #include <string>
 #include <vector>
 
+#include "cl/features.h"
 #include "scene.h"
 
 namespace rtconvert {
 
 // Radiance 1 (white, glTF's emission 1, OBJ's Ke 1) on the course's 0-255 scale.
 inline constexpr float kRadianceScale = 255.0f;
+
+// The course's material type attribute ("" for plain Blinn-Phong) and back; the tags are
+// feature bits (cl/features.h), not small integers.
+inline const char* material_type_name(int type) {
+  switch (type) {
+    case RT_MATERIAL_MIRROR:
+      return "mirror";
+    case RT_MATERIAL_CONDUCTOR:
+      return "conductor";
+    case RT_MATERIAL_DIELECTRIC:
+      return "dielectric";
+    default:
+      return "";
+  }
+}
+inline int material_type_from_name(const std::string& name) {
+  for (int type : {RT_MATERIAL_MIRROR, RT_MATERIAL_CONDUCTOR, RT_MATERIAL_DIELECTRIC})
+    if (name == material_type_name(type)) return type;
+  return RT_MATERIAL_PLAIN;
+}
 
 // Collects the warnings of one conversion (approximate mappings, dropped features); main
 // prints each on its own line, so nothing approximate happens silently.

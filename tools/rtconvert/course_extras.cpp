@@ -58,26 +58,18 @@ rt::CameraDesc camera_from_json(const json& j) {
 }
 
 json material_to_json(const Material& m) {
-  static const char* kTypes[] = {"plain", "mirror", "conductor", "dielectric"};
-  return {{"type", kTypes[m.type >= 0 && m.type < 4 ? m.type : 0]},
-          {"ambientReflectance", to_json(m.ambient)},
-          {"diffuseReflectance", to_json(m.diffuse)},
-          {"specularReflectance", to_json(m.specular)},
-          {"mirrorReflectance", to_json(m.mirror)},
-          {"absorptionCoefficient", to_json(m.absorption)},
-          {"phongExponent", m.phong_exponent},
-          {"refractionIndex", m.refraction_index},
-          {"absorptionIndex", m.absorption_index},
-          {"roughness", m.roughness}};
+  const std::string type = material_type_name(m.type);
+  return {
+      {"type", type.empty() ? "plain" : type},    {"ambientReflectance", to_json(m.ambient)},
+      {"diffuseReflectance", to_json(m.diffuse)}, {"specularReflectance", to_json(m.specular)},
+      {"mirrorReflectance", to_json(m.mirror)},   {"absorptionCoefficient", to_json(m.absorption)},
+      {"phongExponent", m.phong_exponent},        {"refractionIndex", m.refraction_index},
+      {"absorptionIndex", m.absorption_index},    {"roughness", m.roughness}};
 }
 
 Material material_from_json(const json& j) {
   Material m{};
-  const std::string type = j.at("type").get<std::string>();
-  m.type = type == "mirror"       ? RT_MATERIAL_MIRROR
-           : type == "conductor"  ? RT_MATERIAL_CONDUCTOR
-           : type == "dielectric" ? RT_MATERIAL_DIELECTRIC
-                                  : RT_MATERIAL_PLAIN;
+  m.type = material_type_from_name(j.at("type").get<std::string>());
   m.ambient = float3_from(j.at("ambientReflectance"));
   m.diffuse = float3_from(j.at("diffuseReflectance"));
   m.specular = float3_from(j.at("specularReflectance"));

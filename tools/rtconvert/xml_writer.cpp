@@ -87,9 +87,8 @@ bool float_exact(const rt::MeshDesc& mesh) {
 }
 
 void write_material(std::ostream& x, const Material& m, size_t id) {
-  static const char* kTypes[] = {"", "mirror", "conductor", "dielectric"};
   x << "    <Material id=\"" << id << "\"";
-  if (m.type > 0 && m.type < 4) x << " type=\"" << kTypes[m.type] << "\"";
+  if (*material_type_name(m.type)) x << " type=\"" << material_type_name(m.type) << "\"";
   x << ">\n"
     << "      <AmbientReflectance>" << vec(m.ambient) << "</AmbientReflectance>\n"
     << "      <DiffuseReflectance>" << vec(m.diffuse) << "</DiffuseReflectance>\n"
