@@ -1,5 +1,5 @@
-// raytracer: renders every camera of a scene file to PNG on an OpenCL device or with the
-// CPU reference renderer.
+// raytracer: renders every camera of a scene file to an image (PNG, or EXR by extension) on
+// the device chosen by --device, through the one scheduler.
 #include <unistd.h>
 
 #include <cstdio>
@@ -9,10 +9,11 @@
 
 #include "cli.h"
 #include "errors.h"
-#include "moments.h"
-#include "png_io.h"
-#include "render.h"
-#include "render_cl.h"
+#include "device/cl/cl_platform.h"
+#include "device/device.h"
+#include "integrator/render_scheduler.h"
+#include "io/image_output.h"
+#include "io/moments.h"
 
 namespace {
 
@@ -45,17 +46,15 @@ int run(const rt::CliOptions& opt) {
       cam.height = std::max(1, static_cast<int>(std::lround(cam.height * opt.resolution_scale)));
     }
   rt::FlatScene flat = rt::flatten_scene(scene, opt.render);
-  std::unique_ptr<rt::ClRenderer> cl;
-  if (opt.device != rt::Device::kCpu) {
-    std::string why;
-    cl = rt::ClRenderer::create(opt.cl_device, opt.kernel_cache, &why);
-    if (!cl) {
-      if (opt.device == rt::Device::kOpenCl) throw std::runtime_error("OpenCL: " + why);
-      if (!opt.quiet)
-        std::fprintf(stderr, "notice: no usable OpenCL device (%s); using the CPU reference\n",
-                     why.c_str());
-    }
-  }
+  rt::DeviceOptions device_options;
+  device_options.kind = opt.device;
+  device_options.cl_selector = opt.cl_device;
+  device_options.kernel_cache = opt.kernel_cache;
+  device_options.generic_kernel = opt.generic_kernel;
+  device_options.threads = opt.threads;
+  std::string notice;
+  std::unique_ptr<rt::RenderDevice> device = rt::create_device(device_options, &notice);
+  if (!notice.empty() && !opt.quiet) std::fprintf(stderr, "notice: %s\n", notice.c_str());
   for (int c = 0; c < static_cast<int>(scene.cameras.size()); ++c) {
     if (opt.camera >= 0 && c != opt.camera) continue;
     rt::set_camera(flat, scene, c, opt.render);
@@ -63,23 +62,18 @@ int run(const rt::CliOptions& opt) {
     const Camera& fc = flat.header.camera;
     rt::Progress progress(rt::Progress::wanted(opt.quiet), cam.image_name,
                           static_cast<uint64_t>(fc.width) * fc.height * fc.samples);
-    rt::RenderResult r;
-    rt::ClTimings clt;
-    if (cl) {
-      r = cl->render(flat, opt.generic_kernel, progress, &clt, opt.render.stop);
-    } else {
-      r = rt::render_cpu(flat, opt.threads, progress, opt.render.stop);
-    }
+    rt::DeviceLoadInfo load;
+    rt::RenderResult r = rt::render_camera(*device, flat, progress, opt.render.stop, nullptr, &load);
     progress.finish();
     if (uint64_t bad = r.nonfinite())
       std::fprintf(stderr, "warning: %s: %llu samples gave NaN or infinite radiance (left out)\n",
                    cam.image_name.c_str(), static_cast<unsigned long long>(bad));
     std::filesystem::path out = std::filesystem::path(opt.output_dir) / cam.image_name;
-    rt::write_png(out.string(), rt::to_8bit(r.width, r.height, r.rgb()));
+    rt::write_image(out.string(), r.width, r.height, r.rgb());
     if (opt.moments) {
       rt::MomentInfo info{opt.render.seed, r.spp,
                           opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",
-                          cl ? cl->device_name() : "cpu-reference", opt.scene, c};
+                          device->name(), opt.scene, c};
       rt::write_moments(rt::moments_path_for(out.string()), rt::moments_from_render(r, info));
     }
     if (opt.stats) {
@@ -87,10 +81,10 @@ int run(const rt::CliOptions& opt) {
                    "stats: %s: device %s | load %.1f ms | bvh %.1f ms (%zu nodes, %zu triangles, "
                    "%zu instances, depth top %d / mesh %d) | kernel compile %.1f ms%s | render "
                    "%.3f s | %d spp | %.3f Msamples/s | %.3f Mrays/s | features 0x%x\n",
-                   out.string().c_str(), cl ? cl->device_name().c_str() : "cpu-reference",
+                   out.string().c_str(), device->name().c_str(),
                    load_ms, flat.stats.bvh_build_ms, flat.stats.nodes, flat.stats.triangles,
                    flat.stats.instances, flat.stats.tlas_depth, flat.stats.max_blas_depth,
-                   clt.compile_ms, clt.cache_hit ? " (cache hit)" : "", r.seconds, r.spp,
+                   load.compile_ms, load.cache_hit ? " (cache hit)" : "", r.seconds, r.spp,
                    r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
                    static_cast<unsigned>(flat.header.features));
       if (scene.degenerate_triangles)

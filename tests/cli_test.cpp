@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "png_io.h"
+#include "io/png_io.h"
 
 #ifndef RT_RAYTRACER_EXE
 #error "RT_RAYTRACER_EXE must name the raytracer executable"

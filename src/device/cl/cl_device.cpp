@@ -1,0 +1,202 @@
+#include "device/cl/cl_device.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "cl/features.h"
+#include "device/cl/cl_platform.h"
+#include "device/cl/cl_program.h"
+
+namespace rt {
+namespace {
+
+double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+
+size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
+
+template <typename T>
+cl::Buffer upload(const cl::Context& ctx, const std::vector<T>& v) {
+  return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * v.size(),
+                    const_cast<T*>(v.data()));
+}
+
+class ClDevice final : public RenderDevice {
+ public:
+  ClDevice(const ClDeviceEntry& e, const DeviceOptions& options)
+      : device_(e.device), generic_(options.generic_kernel) {
+    name_ = clean_cl_string(device_.getInfo<CL_DEVICE_NAME>());
+    cl_context_properties props[] = {CL_CONTEXT_PLATFORM,
+                                     reinterpret_cast<cl_context_properties>(e.platform()), 0};
+    context_ = cl::Context(device_, props);
+    queue_ = cl::CommandQueue(context_, device_);
+    programs_ = std::make_unique<ClProgramCache>(context_, device_, options.kernel_cache);
+    max_alloc_ = device_.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+    global_mem_ = device_.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+  }
+
+  std::string name() const override { return name_; }
+  int row_alignment() const override { return program_ ? static_cast<int>(program_->local_y) : 1; }
+  DeviceLoadInfo load(const FlatScene& flat) override;
+  uint64_t render(const RenderWork& work) override;
+  void read_accum(std::vector<PixelAccum>* accum) override { read(accum_, accum); }
+  void read_primary(std::vector<PrimaryInfo>* primary) override { read(primary_, primary); }
+
+ private:
+  void check_memory(const FlatScene& flat) const;
+  void launch(const RenderWork& work);
+  template <typename T>
+  void read(const cl::Buffer& buffer, std::vector<T>* out) {
+    out->resize(pixels_);
+    if (pixels_ == 0) return;
+    try {
+      queue_.enqueueReadBuffer(buffer, CL_TRUE, 0, sizeof(T) * pixels_, out->data());
+    } catch (const cl::Error& e) {
+      fail(e);
+    }
+  }
+  [[noreturn]] void fail(const cl::Error& e) const {
+    throw std::runtime_error("OpenCL: " + describe_cl_error(e) + " on " + name_);
+  }
+
+  cl::Device device_;
+  cl::Context context_;
+  cl::CommandQueue queue_;
+  std::unique_ptr<ClProgramCache> programs_;
+  std::string name_;
+  bool generic_;
+  uint64_t max_alloc_ = 0, global_mem_ = 0;
+  // The loaded scene.
+  ClProgram* program_ = nullptr;
+  int width_ = 0, height_ = 0;
+  size_t pixels_ = 0;
+  cl::Buffer header_, materials_, instances_, nodes_, triangles_, normals_, point_lights_,
+      area_lights_, accum_, primary_;
+};
+
+// Refuses, before anything is allocated, a scene the device cannot hold.
+void ClDevice::check_memory(const FlatScene& flat) const {
+  const uint64_t sizes[] = {
+      sizeof(SceneHeader),
+      sizeof(Material) * flat.materials.size(),
+      sizeof(Instance) * flat.instances.size(),
+      sizeof(BvhNode) * flat.nodes.size(),
+      sizeof(Triangle) * flat.triangles.size(),
+      sizeof(TriangleNormals) * flat.normals.size(),
+      sizeof(PointLight) * flat.point_lights.size(),
+      sizeof(AreaLight) * flat.area_lights.size(),
+      sizeof(PixelAccum) * pixels_,
+      sizeof(PrimaryInfo) * pixels_,
+  };
+  uint64_t total = 0, largest = 0;
+  for (uint64_t s : sizes) {
+    total += s;
+    largest = std::max(largest, s);
+  }
+  char msg[256];
+  if (largest > max_alloc_) {
+    std::snprintf(msg, sizeof msg,
+                  "OpenCL: the scene needs a buffer of %.1f MiB but %s allows %.1f MiB per buffer",
+                  mib(largest), name_.c_str(), mib(max_alloc_));
+    throw std::runtime_error(msg);
+  }
+  if (total > global_mem_) {
+    std::snprintf(msg, sizeof msg, "OpenCL: the scene needs %.1f MiB but %s allows %.1f MiB",
+                  mib(total), name_.c_str(), mib(global_mem_));
+    throw std::runtime_error(msg);
+  }
+}
+
+DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
+  width_ = flat.header.camera.width;
+  height_ = flat.header.camera.height;
+  pixels_ = static_cast<size_t>(width_) * height_;
+  program_ = nullptr;
+  check_memory(flat);
+  DeviceLoadInfo info;
+  info.build_options =
+      programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, flat.fast_math);
+  auto start = std::chrono::steady_clock::now();
+  ClProgram& p = programs_->get(info.build_options, &info.compile_ms, &info.cache_hit);
+  try {
+    header_ = cl::Buffer(context_, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(SceneHeader),
+                         const_cast<SceneHeader*>(&flat.header));
+    materials_ = upload(context_, flat.materials);
+    instances_ = upload(context_, flat.instances);
+    nodes_ = upload(context_, flat.nodes);
+    triangles_ = upload(context_, flat.triangles);
+    normals_ = upload(context_, flat.normals);
+    point_lights_ = upload(context_, flat.point_lights);
+    area_lights_ = upload(context_, flat.area_lights);
+    const size_t cells = std::max<size_t>(pixels_, 1);  // OpenCL has no empty buffers.
+    accum_ = cl::Buffer(context_, CL_MEM_READ_WRITE, sizeof(PixelAccum) * cells);
+    primary_ = cl::Buffer(context_, CL_MEM_READ_WRITE, sizeof(PrimaryInfo) * cells);
+    queue_.enqueueFillBuffer(accum_, cl_uint(0), 0, sizeof(PixelAccum) * cells);
+    queue_.enqueueFillBuffer(primary_, cl_uint(0), 0, sizeof(PrimaryInfo) * cells);
+    cl::Kernel& k = p.kernel;
+    k.setArg(0, header_);
+    k.setArg(1, materials_);
+    k.setArg(2, instances_);
+    k.setArg(3, nodes_);
+    k.setArg(4, triangles_);
+    k.setArg(5, normals_);
+    k.setArg(6, point_lights_);
+    k.setArg(7, area_lights_);
+    k.setArg(11, accum_);
+    k.setArg(12, primary_);
+    program_ = &p;
+    // A first use of a program may compile device code lazily at its first launch (PoCL
+    // builds its work-group functions then): an empty launch (no samples) over the whole
+    // image triggers that here, outside the timed render, and counts as compile time.
+    if (!p.warmed) {
+      if (pixels_ > 0) launch({0, height_, 0, 0});
+      p.warmed = true;
+      info.compile_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
+    }
+  } catch (const cl::Error& e) {
+    fail(e);
+  }
+  return info;
+}
+
+void ClDevice::launch(const RenderWork& work) {
+  cl::Kernel& k = program_->kernel;
+  k.setArg(8, work.row_begin);
+  k.setArg(9, work.sample_begin);
+  k.setArg(10, work.sample_end);
+  const size_t lx = program_->local_x, ly = program_->local_y;
+  queue_.enqueueNDRangeKernel(k, cl::NullRange,
+                              cl::NDRange(round_up(static_cast<size_t>(width_), lx),
+                                          round_up(static_cast<size_t>(work.rows()), ly)),
+                              cl::NDRange(lx, ly));
+  queue_.finish();
+}
+
+uint64_t ClDevice::render(const RenderWork& work) {
+  if (work.rows() <= 0 || width_ <= 0) return 0;
+  try {
+    launch(work);
+  } catch (const cl::Error& e) {
+    fail(e);
+  }
+  return 0;  // The kernel counts rays in the film only.
+}
+
+}  // namespace
+
+std::unique_ptr<RenderDevice> create_cl_device(const DeviceOptions& options, std::string* why) {
+  ClDeviceEntry entry;
+  if (!pick_cl_device(options.cl_selector, &entry, why)) return nullptr;
+  try {
+    return std::make_unique<ClDevice>(entry, options);
+  } catch (const cl::Error& e) {
+    *why = describe_cl_error(e);
+  } catch (const std::exception& e) {
+    *why = e.what();
+  }
+  return nullptr;
+}
+
+}  // namespace rt
