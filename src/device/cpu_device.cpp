@@ -10,6 +10,16 @@ CpuDevice::CpuDevice(int threads)
     : threads_(threads > 0 ? threads
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
 
+// The film lives in host memory, beside the caller's outputs; the scene arrays are
+// already allocated.
+void CpuDevice::check_memory(const FlatScene& flat, uint64_t host_bytes) const {
+  const uint64_t pixels =
+      static_cast<uint64_t>(flat.header.camera.width) * flat.header.camera.height;
+  const uint64_t limit = available_host_memory();
+  check_memory_limit(flat, pixels * kFilmBytesPerPixel + host_bytes, limit, "memory",
+                     "the " + format_bytes(limit) + " available");
+}
+
 DeviceLoadInfo CpuDevice::load(const FlatScene& flat) {
   flat_ = &flat;
   view_ = flat.view();

@@ -49,6 +49,11 @@ class RenderDevice {
   virtual ~RenderDevice() = default;
   // "cpu-reference", or the OpenCL device's name.
   virtual std::string name() const = 0;
+  // Checks, before anything is allocated, that rendering `flat`'s camera fits: the device's
+  // buffers (scene arrays and film) in its memory, and `host_bytes` more (the caller's
+  // copies and outputs) in the host's. Throws std::runtime_error, one line naming the
+  // resolution, the bytes needed and the limit.
+  virtual void check_memory(const FlatScene& flat, uint64_t host_bytes) const = 0;
   // Makes `flat` (with its camera) the scene of the following render() calls and clears the
   // film. `flat` must outlive them. Throws std::runtime_error (one line) on failure.
   virtual DeviceLoadInfo load(const FlatScene& flat) = 0;
@@ -64,6 +69,21 @@ class RenderDevice {
   virtual void read_accum(std::vector<PixelAccum>* accum) = 0;
   virtual void read_primary(std::vector<PrimaryInfo>* primary) = 0;
 };
+
+// Bytes of one pixel's film (accumulator and first-hit facts), on any device.
+constexpr uint64_t kFilmBytesPerPixel = sizeof(PixelAccum) + sizeof(PrimaryInfo);
+
+// Throws the memory error of check_memory when `bytes` exceed `limit`: "<W>x<H> pixels need
+// <bytes> of <what>, more than <limit_text>".
+void check_memory_limit(const FlatScene& flat, uint64_t bytes, uint64_t limit,
+                        const std::string& what, const std::string& limit_text);
+
+// The host memory a render may use: the kernel's estimate of available memory
+// (MemAvailable), bounded by the address-space and data-size limits (ulimit -v, -d).
+uint64_t available_host_memory();
+
+// "1.5 GiB (1610612736 bytes)".
+std::string format_bytes(uint64_t bytes);
 
 // Picks the device `options.kind` asks for: kCpu the reference, kOpenCl an OpenCL device or
 // a std::runtime_error naming why none is usable, kAuto OpenCL when usable, else the CPU

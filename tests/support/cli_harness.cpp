@@ -3,10 +3,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <signal.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <thread>
 
 #ifndef RT_RAYTRACER_EXE
 #error "RT_RAYTRACER_EXE must name the raytracer executable"
@@ -119,6 +122,55 @@ Outcome CliFixture::run(const std::string& args, const std::string& env) {
   r.err = slurp(e);
   return r;
 }
+namespace {
+
+// True once `pid` runs the raytracer (not the shell before its exec) with a SIGINT handler.
+bool handlers_installed(pid_t pid) {
+  const std::string proc = "/proc/" + std::to_string(pid);
+  if (slurp(proc + "/comm") != "raytracer\n") return false;
+  std::ifstream status(proc + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("SigCgt:", 0) == 0)
+      return (std::stoull(line.substr(7), nullptr, 16) >> (SIGINT - 1)) & 1;
+  return false;
+}
+
+}  // namespace
+
+pid_t CliFixture::start(const std::string& args) {
+  fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
+  const std::string cmd = "exec " + quote(RT_RAYTRACER_EXE) + " " + args + " <" +
+                          quote("/dev/null") + " >" + quote(o.string()) + " 2>" + quote(e.string());
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int i = 0; i < 2000 && !handlers_installed(pid); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_TRUE(handlers_installed(pid)) << "the raytracer did not start";
+  return pid;
+}
+
+Outcome CliFixture::finish(pid_t pid) {
+  auto t0 = std::chrono::steady_clock::now();
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() - t0 > std::chrono::seconds(30)) {
+      ADD_FAILURE() << "the raytracer did not stop within 30 s";
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  Outcome r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = slurp(dir_ / "stdout.txt");
+  r.err = slurp(dir_ / "stderr.txt");
+  return r;
+}
+
 Outcome CliFixture::render(const std::string& scene, const std::string& extra) {
   return run(quote(scene) + " --device cpu --quiet --output-dir " + quote(out_) + " " + extra);
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -42,6 +44,11 @@ class CliFixture : public ::testing::Test {
   Outcome run(const std::string& args, const std::string& env = "");
   // The usual options: CPU, quiet, the temporary output directory.
   Outcome render(const std::string& scene, const std::string& extra = "");
+  // Starts the raytracer with `args` in the background like run(), and returns its pid
+  // once its signal handlers are installed (so a signal finds them).
+  pid_t start(const std::string& args);
+  // Waits for a started raytracer (killing it after 30 s) and returns its outcome.
+  Outcome finish(pid_t pid);
   // The names in the output directory.
   std::vector<std::string> output_files() const;
 

@@ -11,8 +11,6 @@
 namespace rt {
 namespace {
 
-double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
-
 size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
 
 template <typename T>
@@ -36,6 +34,7 @@ class ClDevice final : public RenderDevice {
   }
 
   std::string name() const override { return name_; }
+  void check_memory(const FlatScene& flat, uint64_t host_bytes) const override;
   int row_alignment() const override { return program_ ? static_cast<int>(program_->local_y) : 1; }
   DeviceLoadInfo load(const FlatScene& flat) override;
   uint64_t render(const RenderWork& work) override;
@@ -43,7 +42,6 @@ class ClDevice final : public RenderDevice {
   void read_primary(std::vector<PrimaryInfo>* primary) override { read(primary_, primary); }
 
  private:
-  void check_memory(const FlatScene& flat) const;
   void launch(const RenderWork& work);
   template <typename T>
   void read(const cl::Buffer& buffer, std::vector<T>* out) {
@@ -74,8 +72,12 @@ class ClDevice final : public RenderDevice {
       area_lights_, accum_, primary_;
 };
 
-// Refuses, before anything is allocated, a scene the device cannot hold.
-void ClDevice::check_memory(const FlatScene& flat) const {
+// Refuses, before anything is allocated, a scene the device cannot hold: each buffer within
+// the device's largest allocation, all of them within its memory, and the host's copies
+// within the host's.
+void ClDevice::check_memory(const FlatScene& flat, uint64_t host_bytes) const {
+  const uint64_t pixels =
+      static_cast<uint64_t>(flat.header.camera.width) * flat.header.camera.height;
   const uint64_t sizes[] = {
       sizeof(SceneHeader),
       sizeof(Material) * flat.materials.size(),
@@ -85,26 +87,21 @@ void ClDevice::check_memory(const FlatScene& flat) const {
       sizeof(TriangleNormals) * flat.normals.size(),
       sizeof(PointLight) * flat.point_lights.size(),
       sizeof(AreaLight) * flat.area_lights.size(),
-      sizeof(PixelAccum) * pixels_,
-      sizeof(PrimaryInfo) * pixels_,
+      sizeof(PixelAccum) * pixels,
+      sizeof(PrimaryInfo) * pixels,
   };
   uint64_t total = 0, largest = 0;
   for (uint64_t s : sizes) {
     total += s;
     largest = std::max(largest, s);
   }
-  char msg[256];
-  if (largest > max_alloc_) {
-    std::snprintf(msg, sizeof msg,
-                  "OpenCL: the scene needs a buffer of %.1f MiB but %s allows %.1f MiB per buffer",
-                  mib(largest), name_.c_str(), mib(max_alloc_));
-    throw std::runtime_error(msg);
-  }
-  if (total > global_mem_) {
-    std::snprintf(msg, sizeof msg, "OpenCL: the scene needs %.1f MiB but %s allows %.1f MiB",
-                  mib(total), name_.c_str(), mib(global_mem_));
-    throw std::runtime_error(msg);
-  }
+  check_memory_limit(flat, largest, max_alloc_, "OpenCL memory in one buffer",
+                     "the " + format_bytes(max_alloc_) + " per buffer of " + name_);
+  check_memory_limit(flat, total, global_mem_, "OpenCL memory",
+                     "the " + format_bytes(global_mem_) + " of " + name_);
+  const uint64_t limit = available_host_memory();
+  check_memory_limit(flat, host_bytes, limit, "host memory",
+                     "the " + format_bytes(limit) + " available");
 }
 
 DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
@@ -112,7 +109,7 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
   height_ = flat.header.camera.height;
   pixels_ = static_cast<size_t>(width_) * height_;
   program_ = nullptr;
-  check_memory(flat);
+  check_memory(flat, 0);
   DeviceLoadInfo info;
   info.build_options =
       programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, flat.fast_math);
