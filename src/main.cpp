@@ -115,8 +115,7 @@ int run(const rt::CliOptions& opt) {
                      scene.degenerate_triangles);
     }
     if (rt::stop_requested().load()) {
-      std::fprintf(stderr,
-                   "raytracer: interrupted: %s written with %d of %d samples per pixel%s\n",
+      std::fprintf(stderr, "raytracer: interrupted: %s written with %d of %d samples per pixel%s\n",
                    out.string().c_str(), r.spp, fc.samples,
                    k + 1 < cameras.size() ? "; the cameras after it were not rendered" : "");
       return rt::kInterruptedExitStatus;
@@ -129,7 +128,7 @@ int run(const rt::CliOptions& opt) {
 
 int main(int argc, char** argv) {
   rt::CliOptions opt = rt::parse_cli(argc, argv);
-  rt::install_interrupt_handlers();
+  rt::install_interrupt_handlers(opt.quiet);
   try {
     return run(opt);
   } catch (const std::bad_alloc&) {
