@@ -8,6 +8,7 @@
 #include "camera.h"
 #include "lights.h"
 #include "surface.h"
+#include "texture/texturing.h"
 
 // A ray tree of depth D never holds more than D + 2 pending rays (one sibling per level
 // plus the pair just pushed), which bounds the explicit stack. Only dielectrics branch:
@@ -54,7 +55,7 @@ RT_DEVICE float3 PerturbDirection(float3 r, float roughness, float2 xi) {
   return Normalize(r + (u * (xi.x - 0.5f) + v * (xi.y - 0.5f)) * roughness);
 }
 
-RT_DEVICE float3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Material* m,
+RT_DEVICE float3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                  float3 r, SampleKey sk, uint key, int primary) {
   if (!RT_HAS(sd, RT_FEATURE_ROUGHNESS) || m->roughness <= 0.0f) return r;
   uint dim = HashCombine(key, 0x2000u);
@@ -62,8 +63,10 @@ RT_DEVICE float3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_GLOBAL const
   return PerturbDirection(r, m->roughness, xi);
 }
 
-// Radiance along a camera ray; *rays counts every ray cast (camera, secondary, shadow).
-RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
+// Radiance along a camera ray through the pixel at `pixel_uv` (its centre over the
+// resolution, where a background texture is looked up); *rays counts every ray cast
+// (camera, secondary, shadow).
+RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, float2 pixel_uv,
                     RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
@@ -84,7 +87,7 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
     int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && task.depth == 0;
     if (!IntersectScene(sd, ray, 0, cull, &hit)) {
       if (task.depth == 0 || (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0)
-        radiance += task.weight * h->background;
+        radiance += task.weight * Background(sd, pixel_uv);
       continue;
     }
     SurfacePoint s = ComputeSurface(sd, ray, hit);
@@ -99,7 +102,17 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
       weight = weight * BeerLambert(task.medium, hit.t * Length(ray.direction));
     float3 wo = Normalize(-ray.direction);
     int front = Dot(wo, s.ng) > 0.0f;
-    RT_GLOBAL const Material* m = &sd->materials[s.material];
+    // The material's parameters at this hit: textures replace some of them and may
+    // perturb the shading normal, or paste their colour in place of any shading.
+    Material mat = sd->materials[s.material];
+    RT_PRIVATE const Material* m = &mat;
+    if (RT_HAS(sd, RT_FEATURE_TEXTURES)) {
+      float3 paste = Vec3(0.0f);
+      if (ApplyTextures(sd, ray, hit, s.p, &mat, &s.n, &paste)) {
+        radiance += weight * paste;
+        continue;
+      }
+    }
     int primary = task.depth == 0;
     int dielectric = RT_HAS(sd, RT_FEATURE_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC;
     // Opaque surfaces are shaded with the normal as modelled, also when seen from behind,
@@ -177,7 +190,9 @@ RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint
     *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
   Ray ray = GenerateCameraRay(sd, (float)x + film.x, (float)y + film.y, lens, time);
-  return Li(sd, sk, ray, info, rays);
+  float2 pixel_uv = make_float2(((float)x + 0.5f) / (float)cam->width,
+                                ((float)y + 0.5f) / (float)cam->height);
+  return Li(sd, sk, ray, pixel_uv, info, rays);
 }
 
 #endif  // RT_INTEGRATOR_H

@@ -6,6 +6,9 @@ __kernel void render(__global const SceneHeader* header, __global const Material
                      __global const Instance* instances, __global const BvhNode* nodes,
                      __global const Triangle* triangles, __global const TriangleNormals* normals,
                      __global const PointLight* point_lights, __global const AreaLight* area_lights,
+                     __global const TextureDesc* textures, __global const uint* texels,
+                     __global const InstanceTextures* instance_textures,
+                     __global const TriangleUV* triangle_uvs,
                      int row_begin, int sample_begin, int sample_end, __global PixelAccum* accum,
                      __global PrimaryInfo* primary) {
   int x = (int)get_global_id(0);
@@ -20,6 +23,10 @@ __kernel void render(__global const SceneHeader* header, __global const Material
   sd.normals = normals;
   sd.point_lights = point_lights;
   sd.area_lights = area_lights;
+  sd.textures = textures;
+  sd.texels = texels;
+  sd.instance_textures = instance_textures;
+  sd.triangle_uvs = triangle_uvs;
   int pixel = y * header->camera.width + x;
   AccumulatePixel(&sd, x, y, sample_begin, sample_end, &accum[pixel], &primary[pixel]);
 }

@@ -17,7 +17,7 @@ RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, float3 origin, float3 s
 
 // Irradiance-weighted Blinn-Phong from a light point q with irradiance scale `power`
 // (intensity, or radiance * area * light cosine), falling off as 1 / d^2.
-RT_DEVICE float3 ShadeFromPoint(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Material* m,
+RT_DEVICE float3 ShadeFromPoint(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 float3 p, float scale, float3 n, float3 ng, float3 wo, float3 q,
                                 float3 power, int two_sided_normal, float3 light_normal, float time,
                                 RT_PRIVATE uint* rays) {
@@ -35,7 +35,7 @@ RT_DEVICE float3 ShadeFromPoint(RT_PRIVATE const SceneData* sd, RT_GLOBAL const 
 
 // Ambient plus every light's contribution at a surface point; `key` and `primary`
 // choose the area-light samples (stratified for camera-ray hits).
-RT_DEVICE float3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Material* m,
+RT_DEVICE float3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 float3 p, float scale, float3 n, float3 ng, float3 wo, float time,
                                 SampleKey sk, uint key, int primary, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;

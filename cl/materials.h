@@ -8,7 +8,7 @@
 
 // Diffuse plus Blinn-Phong specular for irradiance `e` arriving from unit direction wi
 // at a point with unit normal n, seen from unit direction wo.
-RT_DEVICE float3 BlinnPhong(RT_GLOBAL const Material* m, float3 n, float3 wo, float3 wi, float3 e) {
+RT_DEVICE float3 BlinnPhong(RT_PRIVATE const Material* m, float3 n, float3 wo, float3 wi, float3 e) {
   float cos_i = Dot(n, wi);
   if (cos_i <= 0.0f) return Vec3(0.0f);
   float3 h = Normalize(wi + wo);

@@ -6,6 +6,7 @@
 #define RT_SCENE_TYPES_H
 
 #include "compat.h"
+#include "texture/texture_types.h"
 
 #define RT_MATERIAL_PLAIN 0
 #define RT_MATERIAL_MIRROR 1
@@ -120,6 +121,7 @@ typedef struct SceneHeader {
   int filter;
   float filter_sigma;  // Gaussian filter's standard deviation, in pixels.
   int flags;
+  int background_texture;  // Index of the replace_background texture, or -1.
 } SceneHeader;
 
 // The arrays of one scene, passed by pointer to every stage (compare Cycles'
@@ -133,6 +135,10 @@ typedef struct SceneData {
   RT_GLOBAL const TriangleNormals* normals;
   RT_GLOBAL const PointLight* point_lights;
   RT_GLOBAL const AreaLight* area_lights;
+  RT_GLOBAL const TextureDesc* textures;
+  RT_GLOBAL const uint* texels;
+  RT_GLOBAL const InstanceTextures* instance_textures;  // Parallel to instances.
+  RT_GLOBAL const TriangleUV* triangle_uvs;             // Parallel to triangles.
 } SceneData;
 
 #endif  // RT_SCENE_TYPES_H

@@ -15,7 +15,9 @@ static_assert(sizeof(AreaLight) == 96, "AreaLight layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
 static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
-static_assert(sizeof(SceneHeader) == 192, "SceneHeader layout");
+static_assert(sizeof(SceneHeader) == 208, "SceneHeader layout");
+static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
+static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
 
 namespace {
 
@@ -59,6 +61,33 @@ std::vector<Vec3d> vertex_normals(const MeshDesc& mesh) {
 
 bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
+// Every image once, as packed 8-bit RGB texels one after the other, and a descriptor per
+// TextureMap pointing at its image.
+void flatten_textures(const SceneDesc& scene, FlatScene& f) {
+  std::vector<int> first(scene.images.size());
+  for (size_t i = 0; i < scene.images.size(); ++i) {
+    const ImageF& im = scene.images[i];
+    first[i] = static_cast<int>(f.texels.size());
+    for (size_t p = 0; p < im.size(); ++p) {
+      uint32_t packed = 0;
+      for (int c = 0; c < 3; ++c) {
+        float v = im.pixels[p * im.channels + (im.channels >= 3 ? c : 0)];
+        packed |= static_cast<uint32_t>(std::min(255.0f, std::max(0.0f, v))) << (8 * c);
+      }
+      f.texels.push_back(packed);
+    }
+  }
+  for (const TextureMapDesc& t : scene.textures) {
+    TextureDesc d = t.desc;
+    if (t.image >= 0) {
+      d.first_texel = first[t.image];
+      d.width = scene.images[t.image].width;
+      d.height = scene.images[t.image].height;
+    }
+    f.textures.push_back(d);
+  }
+}
+
 }  // namespace
 
 SceneData FlatScene::view() const {
@@ -71,6 +100,10 @@ SceneData FlatScene::view() const {
   sd.normals = normals.data();
   sd.point_lights = point_lights.data();
   sd.area_lights = area_lights.data();
+  sd.textures = textures.data();
+  sd.texels = texels.data();
+  sd.instance_textures = instance_textures.data();
+  sd.triangle_uvs = triangle_uvs.data();
   return sd;
 }
 
@@ -102,6 +135,16 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     if (mesh.smooth) vn = vertex_normals(mesh);
     for (int i : order) {
       const auto& t = mesh.triangles[i];
+      TriangleUV uv{};
+      if (!mesh.uvs.empty()) {
+        auto at = [&](int k) {
+          return float2{static_cast<float>(mesh.uvs[t[k]][0]), static_cast<float>(mesh.uvs[t[k]][1])};
+        };
+        uv.uv0 = at(0);
+        uv.uv1 = at(1);
+        uv.uv2 = at(2);
+      }
+      f.triangle_uvs.push_back(uv);
       Triangle tri;
       tri.v0 = to_float3(mesh.positions[t[0]]);
       tri.v1 = to_float3(mesh.positions[t[1]]);
@@ -118,6 +161,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   }
   // Top level: one leaf per instance, boxes covering the whole shutter interval.
   std::vector<Instance> unordered;
+  std::vector<InstanceTextures> unordered_textures;
   std::vector<Aabb> boxes;
   Aabb unit;
   unit.grow(-1, -1, -1);
@@ -140,11 +184,19 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
                  (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
                  (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
+    InstanceTextures it;
+    for (int k = 0; k < RT_MAX_OBJECT_TEXTURES; ++k)
+      it.ids[k] = k < static_cast<int>(o.textures.size()) ? o.textures[k] : -1;
+    unordered_textures.push_back(it);
     boxes.push_back(transformed_box(sphere ? unit : blas_box[o.mesh], o.transform, o.motion));
   }
   std::vector<int> order;
   BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, f.nodes, order);
-  for (int i : order) f.instances.push_back(unordered[i]);
+  for (int i : order) {
+    f.instances.push_back(unordered[i]);
+    f.instance_textures.push_back(unordered_textures[i]);
+  }
+  flatten_textures(scene, f);
   f.header.tlas_root = top.root;
   f.stats.tlas_depth = top.depth;
   f.stats.nodes = f.nodes.size();
@@ -153,7 +205,12 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
   if (f.nodes.empty()) f.nodes.emplace_back();
   if (f.instances.empty()) f.instances.emplace_back();
+  if (f.instances.size() > f.instance_textures.size())
+    f.instance_textures.push_back(InstanceTextures{{-1, -1, -1, -1}});
   if (f.triangles.empty()) f.triangles.emplace_back(), f.normals.emplace_back();
+  if (f.triangle_uvs.empty()) f.triangle_uvs.emplace_back();
+  if (f.textures.empty()) f.textures.emplace_back();
+  if (f.texels.empty()) f.texels.emplace_back();
   if (f.materials.empty()) f.materials.emplace_back();
   if (f.point_lights.empty()) f.point_lights.emplace_back();
   if (f.area_lights.empty()) f.area_lights.emplace_back();
@@ -163,6 +220,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   h.shadow_epsilon = options.use_scene_epsilon ? static_cast<float>(scene.shadow_epsilon) : 0.0f;
   h.intersection_epsilon = static_cast<float>(scene.intersection_epsilon);
   h.max_depth = scene.max_depth;
+  h.background_texture = scene.background_texture;
   h.num_point_lights = static_cast<int>(scene.point_lights.size());
   h.num_area_lights = static_cast<int>(scene.area_lights.size());
   h.num_instances = static_cast<int>(f.stats.instances);
@@ -222,6 +280,9 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
     if (m.type == RT_MATERIAL_DIELECTRIC) f |= RT_FEATURE_DIELECTRIC;
     if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
   }
+  bool textured = scene.background_texture >= 0;
+  for (const ObjectDesc& o : scene.objects) textured = textured || !o.textures.empty();
+  if (textured) f |= RT_FEATURE_TEXTURES;
   if (!scene.point_lights.empty()) f |= RT_FEATURE_POINT_LIGHTS;
   if (!scene.area_lights.empty()) f |= RT_FEATURE_AREA_LIGHTS;
   const CameraDesc& c = scene.cameras[camera];

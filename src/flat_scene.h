@@ -46,6 +46,10 @@ struct FlatScene {
   std::vector<TriangleNormals> normals;
   std::vector<PointLight> point_lights;
   std::vector<AreaLight> area_lights;
+  std::vector<TextureDesc> textures;
+  std::vector<uint32_t> texels;  // Packed 8-bit RGB (cl/texture/image_texture.h).
+  std::vector<InstanceTextures> instance_textures;
+  std::vector<TriangleUV> triangle_uvs;
   FlatStats stats;
   bool fast_math = false;  // Host-side only: how the OpenCL program is built.
 

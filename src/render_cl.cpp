@@ -45,6 +45,9 @@ __kernel void rt_sizes(__global int* out) {
   out[8] = (int)sizeof(PixelAccum);
   out[9] = (int)sizeof(PrimaryInfo);
   out[10] = (int)sizeof(Camera);
+  out[11] = (int)sizeof(TextureDesc);
+  out[12] = (int)sizeof(InstanceTextures);
+  out[13] = (int)sizeof(TriangleUV);
 }
 )RTCL";
 
@@ -58,7 +61,8 @@ const LayoutEntry kLayout[] = {
     {"Triangle", sizeof(Triangle)},       {"TriangleNormals", sizeof(TriangleNormals)},
     {"PointLight", sizeof(PointLight)},   {"AreaLight", sizeof(AreaLight)},
     {"PixelAccum", sizeof(PixelAccum)},   {"PrimaryInfo", sizeof(PrimaryInfo)},
-    {"Camera", sizeof(Camera)},
+    {"Camera", sizeof(Camera)},           {"TextureDesc", sizeof(TextureDesc)},
+    {"InstanceTextures", sizeof(InstanceTextures)}, {"TriangleUV", sizeof(TriangleUV)},
 };
 constexpr int kLayoutCount = static_cast<int>(sizeof(kLayout) / sizeof(kLayout[0]));
 
@@ -502,6 +506,10 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
       sizeof(TriangleNormals) * flat.normals.size(),
       sizeof(PointLight) * flat.point_lights.size(),
       sizeof(AreaLight) * flat.area_lights.size(),
+      sizeof(TextureDesc) * flat.textures.size(),
+      sizeof(uint32_t) * flat.texels.size(),
+      sizeof(InstanceTextures) * flat.instance_textures.size(),
+      sizeof(TriangleUV) * flat.triangle_uvs.size(),
       sizeof(PixelAccum) * pixels,
       sizeof(PrimaryInfo) * pixels,
   };
@@ -538,6 +546,10 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
     cl::Buffer normals = upload(context_, flat.normals);
     cl::Buffer point_lights = upload(context_, flat.point_lights);
     cl::Buffer area_lights = upload(context_, flat.area_lights);
+    cl::Buffer textures = upload(context_, flat.textures);
+    cl::Buffer texels = upload(context_, flat.texels);
+    cl::Buffer instance_textures = upload(context_, flat.instance_textures);
+    cl::Buffer triangle_uvs = upload(context_, flat.triangle_uvs);
     const size_t cells = std::max<size_t>(pixels, 1);  // OpenCL has no empty buffers.
     cl::Buffer accum(context_, CL_MEM_READ_WRITE, sizeof(PixelAccum) * cells);
     cl::Buffer primary(context_, CL_MEM_READ_WRITE, sizeof(PrimaryInfo) * cells);
@@ -553,15 +565,19 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
     k.setArg(5, normals);
     k.setArg(6, point_lights);
     k.setArg(7, area_lights);
-    k.setArg(11, accum);
-    k.setArg(12, primary);
+    k.setArg(8, textures);
+    k.setArg(9, texels);
+    k.setArg(10, instance_textures);
+    k.setArg(11, triangle_uvs);
+    k.setArg(15, accum);
+    k.setArg(16, primary);
 
     const size_t lx = b.local_x, ly = b.local_y;
     const size_t gx = round_up(static_cast<size_t>(width), lx);
     auto launch = [&](int row_begin, int rows, int s0, int s1) {
-      k.setArg(8, row_begin);
-      k.setArg(9, s0);
-      k.setArg(10, s1);
+      k.setArg(12, row_begin);
+      k.setArg(13, s0);
+      k.setArg(14, s1);
       queue_.enqueueNDRangeKernel(k, cl::NullRange,
                                   cl::NDRange(gx, round_up(static_cast<size_t>(rows), ly)),
                                   cl::NDRange(lx, ly));
