@@ -8,8 +8,9 @@
 #include "texture_types.h"
 
 typedef struct TextureFrame {
-  float3 dpdu, dpdv;  // World-space tangents (not normalized).
-  float3 p_obj;       // Object-space position (the unit sphere for spheres).
+  float3 dpdu, dpdv;          // World-space tangents (not normalized).
+  float3 dpdu_obj, dpdv_obj;  // The same in object space.
+  float3 p_obj;               // Object-space position (the unit sphere for spheres).
   float2 uv;
 } TextureFrame;
 

@@ -36,6 +36,8 @@ RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd, Ray r
                        tuv->uv0.y * b0 + tuv->uv1.y * hit.b1 + tuv->uv2.y * hit.b2);
     TriangleTangents(tri->v0, tri->v1, tri->v2, tuv->uv0, tuv->uv1, tuv->uv2, &f.dpdu, &f.dpdv);
   }
+  f.dpdu_obj = f.dpdu;
+  f.dpdv_obj = f.dpdv;
   if (transformed) {
     f.dpdu = TransformVector(inst->object_to_world, f.dpdu);
     f.dpdv = TransformVector(inst->object_to_world, f.dpdv);
@@ -62,13 +64,22 @@ RT_DEVICE float ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Text
 
 // The bump-mapped normal: images differentiate their height one texel ahead along u and
 // v; Perlin noise is differentiated in space (a forward difference of 1e-3 / NoiseScale).
+// An image's heights displace the surface as the file models it, before its
+// transformation: the normal is bumped in object space and transformed as normals are.
 RT_DEVICE float3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
-                            TextureFrame f, float3 p, float3 n) {
+                            Hit hit, TextureFrame f, float3 p, float3 n) {
   if (t->type == RT_TEXTURE_IMAGE) {
+    RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
+    int transformed =
+        RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
+    float scale = t->bump_factor * sd->instance_textures[hit.instance].bump_scale;
     float h = ImageHeight(sd, t, f.uv);
     float hu = ImageHeight(sd, t, make_float2(f.uv.x + 1.0f / (float)t->width, f.uv.y));
     float hv = ImageHeight(sd, t, make_float2(f.uv.x, f.uv.y + 1.0f / (float)t->height));
-    return BumpedNormal(n, f.dpdu, f.dpdv, (hu - h) * t->bump_factor, (hv - h) * t->bump_factor);
+    // n = M^-T n_obj, so n_obj is proportional to M^T n.
+    float3 n_obj = transformed ? Normalize(TransformNormalByInverse(inst->object_to_world, n)) : n;
+    float3 b = BumpedNormal(n_obj, f.dpdu_obj, f.dpdv_obj, (hu - h) * scale, (hv - h) * scale);
+    return transformed ? Normalize(TransformNormalByInverse(inst->world_to_object, b)) : b;
   }
   float eps = 1e-3f / t->noise_scale;
   float h = PerlinTexture(t, p);
@@ -93,7 +104,7 @@ RT_DEVICE int ApplyTextures(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit, fl
       float3 c = LookupImage(sd->texels, t, f.uv) - Vec3(127.5f);
       *n = TangentToWorld(*n, f.dpdu, f.dpdv, Normalize(c));
     } else if (t->decal == RT_DECAL_BUMP_NORMAL) {
-      *n = BumpNormal(sd, t, f, p, *n);
+      *n = BumpNormal(sd, t, hit, f, p, *n);
     } else if (t->decal != RT_DECAL_REPLACE_BACKGROUND) {
       float3 c = TextureColor(sd, t, f.uv, p);
       if (t->decal == RT_DECAL_REPLACE_KD) m->diffuse = c;
