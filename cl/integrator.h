@@ -63,9 +63,8 @@ RT_DEVICE float3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
   return PerturbDirection(r, m->roughness, xi);
 }
 
-// Radiance along a camera ray through the pixel at `pixel_uv` (its centre over the
-// resolution, where a background texture is looked up); *rays counts every ray cast
-// (camera, secondary, shadow).
+// Radiance along a camera ray through the pixel at `pixel_uv` (where a background
+// texture is looked up); *rays counts every ray cast (camera, secondary, shadow).
 RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, float2 pixel_uv,
                     RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
@@ -190,8 +189,10 @@ RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint
     *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
   Ray ray = GenerateCameraRay(sd, (float)x + film.x, (float)y + film.y, lens, time);
-  float2 pixel_uv = make_float2(((float)x + 0.5f) / (float)cam->width,
-                                ((float)y + 0.5f) / (float)cam->height);
+  // The background image is stretched over the film, pixel (x, y) at (x, y) / resolution:
+  // with the bilinear lookup's convention (image_texture.h) an image of the film's size
+  // is reproduced texel for texel, as in the course's galactica images.
+  float2 pixel_uv = make_float2((float)x / (float)cam->width, (float)y / (float)cam->height);
   return Li(sd, sk, ray, pixel_uv, info, rays);
 }
 

@@ -119,13 +119,13 @@ RT_DEVICE int ApplyTextures(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit, fl
   return pasted;
 }
 
-// The background seen through pixel uv (pixel centre / resolution) when a
-// replace_background texture is set, else the background colour.
+// The background seen at film position pixel_uv when a replace_background texture is
+// set (its texel values are radiance, whatever the Normalizer), else the colour.
 RT_DEVICE float3 Background(RT_PRIVATE const SceneData* sd, float2 pixel_uv) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   if (!RT_HAS(sd, RT_FEATURE_TEXTURES) || h->background_texture < 0) return h->background;
   RT_GLOBAL const TextureDesc* t = &sd->textures[h->background_texture];
-  return LookupImage(sd->texels, t, pixel_uv) * (255.0f / t->normalizer);
+  return LookupImage(sd->texels, t, pixel_uv);
 }
 
 #endif  // RT_TEXTURING_H
