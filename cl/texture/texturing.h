@@ -55,10 +55,12 @@ RT_DEVICE float3 TextureColor(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Te
   return CheckerboardTexture(t, p);
 }
 
-// An image's height: the mean of its channels on the 0..255 scale.
+// An image's height: the mean of its channels on the 0..255 scale, from the nearest
+// texel whatever the texture's Interpolation (bilinear heights give wood_box_all MAE 4.0
+// against the course's image, nearest 0.20).
 RT_DEVICE float ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
                             float2 uv) {
-  float3 c = LookupImage(sd->texels, t, uv);
+  float3 c = LookupNearest(sd->texels, t, uv);
   return (c.x + c.y + c.z) * (1.0f / 3.0f);
 }
 
