@@ -49,8 +49,7 @@ RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd, Ray r
 // a grey level, the checkerboard's colours. Procedural textures are evaluated at p.
 RT_DEVICE float3 TextureColor(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
                               float2 uv, float3 p) {
-  if (t->type == RT_TEXTURE_IMAGE)
-    return LookupImage(sd->texels, t, uv) * (1.0f / t->normalizer);
+  if (t->type == RT_TEXTURE_IMAGE) return LookupImage(sd->texels, t, uv) * (1.0f / t->normalizer);
   if (t->type == RT_TEXTURE_PERLIN) return Vec3(PerlinTexture(t, p));
   return CheckerboardTexture(t, p);
 }
@@ -68,8 +67,8 @@ RT_DEVICE float ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Text
 // v; Perlin noise is differentiated in space (a forward difference of 1e-3 / NoiseScale).
 // An image's heights displace the surface as the file models it, before its
 // transformation: the normal is bumped in object space and transformed as normals are.
-RT_DEVICE float3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
-                            Hit hit, TextureFrame f, float3 p, float3 n) {
+RT_DEVICE float3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t, Hit hit,
+                            TextureFrame f, float3 p, float3 n) {
   if (t->type == RT_TEXTURE_IMAGE) {
     RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
     int transformed =

@@ -19,8 +19,8 @@ RT_DEVICE float AtanPositive(float x) {
     x = (x - 1.0f) / (x + 1.0f);
   }
   float z = x * x;
-  float poly = ((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z -
-               3.33329491539e-1f;
+  float poly =
+      ((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f;
   return base + (poly * z * x + x);
 }
 
