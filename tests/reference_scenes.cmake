@@ -6,9 +6,5 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 foreach(line IN LISTS rt_course_lines)
   string(REGEX REPLACE "[ \t]+" ";" fields "${line}")
   list(POP_FRONT fields name scene reference criterion)
-  if(criterion STREQUAL "none")
-    rt_cl_vs_cpu(${name} ${scene} ${fields})  # No reference to hold it to: devices only.
-  else()
-    rt_reference(${name} ${scene} ${reference} ${criterion} ${fields})
-  endif()
+  rt_reference(${name} ${scene} ${reference} ${criterion} ${fields})
 endforeach()

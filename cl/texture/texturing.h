@@ -98,6 +98,9 @@ RT_DEVICE int ApplyTextures(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit, fl
   RT_GLOBAL const InstanceTextures* list = &sd->instance_textures[hit.instance];
   if (list->ids[0] < 0) return 0;
   TextureFrame f = ComputeTextureFrame(sd, ray, hit, p);
+  // Procedural textures are evaluated at the object-space point of meshes but at the
+  // world-space point of spheres, as the course's images show (cube_perlin, ellipsoids).
+  float3 q = hit.primitive >= 0 ? f.p_obj : p;
   int pasted = 0;
   for (int k = 0; k < RT_MAX_OBJECT_TEXTURES && list->ids[k] >= 0; ++k) {
     RT_GLOBAL const TextureDesc* t = &sd->textures[list->ids[k]];
@@ -105,9 +108,9 @@ RT_DEVICE int ApplyTextures(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit, fl
       float3 c = LookupImage(sd->texels, t, f.uv) - Vec3(127.5f);
       *n = TangentToWorld(*n, f.dpdu, f.dpdv, Normalize(c));
     } else if (t->decal == RT_DECAL_BUMP_NORMAL) {
-      *n = BumpNormal(sd, t, hit, f, p, *n);
+      *n = BumpNormal(sd, t, hit, f, q, *n);
     } else if (t->decal != RT_DECAL_REPLACE_BACKGROUND) {
-      float3 c = TextureColor(sd, t, f.uv, p);
+      float3 c = TextureColor(sd, t, f.uv, q);
       if (t->decal == RT_DECAL_REPLACE_KD) m->diffuse = c;
       if (t->decal == RT_DECAL_BLEND_KD) m->diffuse = (m->diffuse + c) * 0.5f;
       if (t->decal == RT_DECAL_REPLACE_KS) m->specular = c;
