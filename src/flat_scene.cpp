@@ -185,7 +185,6 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
                  (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
     InstanceTextures it{};
-    it.bump_scale = sphere ? static_cast<float>(1.0 / o.radius) : 1.0f;
     for (int k = 0; k < RT_MAX_OBJECT_TEXTURES; ++k)
       it.ids[k] = k < static_cast<int>(o.textures.size()) ? o.textures[k] : -1;
     unordered_textures.push_back(it);
@@ -207,7 +206,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   if (f.nodes.empty()) f.nodes.emplace_back();
   if (f.instances.empty()) f.instances.emplace_back();
   if (f.instances.size() > f.instance_textures.size())
-    f.instance_textures.push_back(InstanceTextures{{-1, -1, -1, -1}, 1.0f, 0, 0, 0});
+    f.instance_textures.push_back(InstanceTextures{{-1, -1, -1, -1}});
   if (f.triangles.empty()) f.triangles.emplace_back(), f.normals.emplace_back();
   if (f.triangle_uvs.empty()) f.triangle_uvs.emplace_back();
   if (f.textures.empty()) f.textures.emplace_back();

@@ -37,7 +37,6 @@ struct ObjectDesc {
   Mat4 transform;  // Object to world; for spheres it includes centre and radius.
   Vec3d motion;    // World-space translation over the shutter.
   std::vector<int> textures;  // Indices into SceneDesc::textures.
-  double radius = 1;          // A sphere's Radius (already part of `transform`).
 };
 
 // One TextureMap; `desc` holds its device parameters except the image placement.

@@ -577,7 +577,6 @@ void Loader::read_objects(const XMLElement* scene) {
       const XMLElement* r = child(e, "Radius", true);
       double radius = number(r);
       if (!(radius > 0)) fail_value(r, "must be positive");
-      o.radius = radius;
       o.transform =
           transform_of(e) * Mat4::translation(centre) * Mat4::scaling({radius, radius, radius});
       o.motion = motion_of(e);

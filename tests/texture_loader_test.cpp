@@ -114,7 +114,6 @@ TEST_F(TextureLoader, ReadsEveryElement) {
   ASSERT_EQ(s.objects.size(), 2u);
   EXPECT_EQ(s.objects[0].textures, (std::vector<int>{0, 1}));
   EXPECT_EQ(s.objects[1].textures, (std::vector<int>{2}));
-  EXPECT_EQ(s.objects[1].radius, 0.5);
   // Texture coordinates follow the vertices: vertex 3 is (1, 1, 0) with uv (1, 0).
   const MeshDesc& m = s.meshes[s.objects[0].mesh];
   ASSERT_EQ(m.uvs.size(), m.positions.size());

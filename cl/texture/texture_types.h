@@ -47,10 +47,6 @@ typedef struct TextureDesc {
 // The texture maps an object lists, by index into the descriptors; -1 ends the list.
 typedef struct InstanceTextures {
   int ids[RT_MAX_OBJECT_TEXTURES];
-  // Object-space units per unit of the object as the file models it: 1 / Radius for a
-  // sphere (ours is the unit sphere), 1 for meshes. Bump heights are lengths there.
-  float bump_scale;
-  int pad0, pad1, pad2;
 } InstanceTextures;
 
 // Texture coordinates of a triangle's corners, in the order of its vertices.

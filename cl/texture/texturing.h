@@ -63,24 +63,28 @@ RT_DEVICE float ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Text
   return (c.x + c.y + c.z) * (1.0f / 3.0f);
 }
 
-// The bump-mapped normal: images differentiate their height one texel ahead along u and
-// v; Perlin noise is differentiated in space (a forward difference of 1e-3 / NoiseScale).
-// An image's heights displace the surface as the file models it, before its
-// transformation: the normal is bumped in object space and transformed as normals are.
+// The bump-mapped normal. Images differentiate their height one texel ahead along u and
+// v, and displace the surface along its normal: for spheres the surface in the world
+// (the course's sphere coordinates are in world units there), for meshes the surface as
+// the file models it, before its transformation, whose bumped normal is then transformed
+// as normals are (the course's bump_mapping_transformed shows both). Perlin noise is
+// differentiated in space (a forward difference of 1e-3 / NoiseScale).
 RT_DEVICE float3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t, Hit hit,
                             TextureFrame f, float3 p, float3 n) {
   if (t->type == RT_TEXTURE_IMAGE) {
+    float h = ImageHeight(sd, t, f.uv);
+    float dhdu = (ImageHeight(sd, t, make_float2(f.uv.x + 1.0f / (float)t->width, f.uv.y)) - h) *
+                 t->bump_factor;
+    float dhdv = (ImageHeight(sd, t, make_float2(f.uv.x, f.uv.y + 1.0f / (float)t->height)) - h) *
+                 t->bump_factor;
     RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
     int transformed =
         RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
-    float scale = t->bump_factor * sd->instance_textures[hit.instance].bump_scale;
-    float h = ImageHeight(sd, t, f.uv);
-    float hu = ImageHeight(sd, t, make_float2(f.uv.x + 1.0f / (float)t->width, f.uv.y));
-    float hv = ImageHeight(sd, t, make_float2(f.uv.x, f.uv.y + 1.0f / (float)t->height));
+    if (hit.primitive < 0 || !transformed) return BumpedNormal(n, f.dpdu, f.dpdv, dhdu, dhdv);
     // n = M^-T n_obj, so n_obj is proportional to M^T n.
-    float3 n_obj = transformed ? Normalize(TransformNormalByInverse(inst->object_to_world, n)) : n;
-    float3 b = BumpedNormal(n_obj, f.dpdu_obj, f.dpdv_obj, (hu - h) * scale, (hv - h) * scale);
-    return transformed ? Normalize(TransformNormalByInverse(inst->world_to_object, b)) : b;
+    float3 n_obj = Normalize(TransformNormalByInverse(inst->object_to_world, n));
+    float3 b = BumpedNormal(n_obj, f.dpdu_obj, f.dpdv_obj, dhdu, dhdv);
+    return Normalize(TransformNormalByInverse(inst->world_to_object, b));
   }
   float eps = 1e-3f / t->noise_scale;
   float h = PerlinTexture(t, p);
