@@ -11,12 +11,13 @@ namespace rt {
 // C++ and OpenCL C must agree on every byte of the shared structs.
 static_assert(sizeof(float3) == 16 && alignof(float3) == 16, "float3 must match OpenCL");
 static_assert(sizeof(Material) == 112, "Material layout");
-static_assert(sizeof(AreaLight) == 96, "AreaLight layout");
+static_assert(sizeof(Light) == 112, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
 static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
-static_assert(sizeof(SceneHeader) == 208, "SceneHeader layout");
+static_assert(sizeof(SceneHeader) == 192, "SceneHeader layout");
 static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
+static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
 static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
 
 namespace {
@@ -61,31 +62,35 @@ std::vector<Vec3d> vertex_normals(const MeshDesc& mesh) {
 
 bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
-// Every image once, as packed 8-bit RGB texels one after the other, and a descriptor per
-// TextureMap pointing at its image.
-void flatten_textures(const SceneDesc& scene, FlatScene& f) {
-  std::vector<int> first(scene.images.size());
-  for (size_t i = 0; i < scene.images.size(); ++i) {
-    const ImageF& im = scene.images[i];
-    first[i] = static_cast<int>(f.texels.size());
-    for (size_t p = 0; p < im.size(); ++p) {
-      uint32_t packed = 0;
-      for (int c = 0; c < 3; ++c) {
-        float v = im.pixels[p * im.channels + (im.channels >= 3 ? c : 0)];
-        packed |= static_cast<uint32_t>(std::min(255.0f, std::max(0.0f, v))) << (8 * c);
-      }
-      f.texels.push_back(packed);
-    }
+// The tagged array, in the order the direct light is summed: point lights, area lights,
+// then the other types. Lights that draw random numbers are numbered in that order.
+std::vector<Light> tagged_lights(const SceneDesc& scene) {
+  std::vector<Light> out;
+  for (const PointLight& p : scene.point_lights) {
+    Light l{};
+    l.type = RT_LIGHT_POINT;
+    l.position = p.position;
+    l.emission = p.intensity;
+    out.push_back(l);
   }
-  for (const TextureMapDesc& t : scene.textures) {
-    TextureDesc d = t.desc;
-    if (t.image >= 0) {
-      d.first_texel = first[t.image];
-      d.width = scene.images[t.image].width;
-      d.height = scene.images[t.image].height;
-    }
-    f.textures.push_back(d);
+  int sampled = 0;
+  for (const AreaLight& a : scene.area_lights) {
+    Light l{};
+    l.type = RT_LIGHT_AREA;
+    l.position = a.corner;
+    l.edge1 = a.edge1;
+    l.edge2 = a.edge2;
+    l.normal = a.normal;
+    l.emission = a.radiance;
+    l.area = a.area;
+    l.sample_index = sampled++;
+    out.push_back(l);
   }
+  for (Light l : scene.lights) {
+    l.sample_index = sampled++;
+    out.push_back(l);
+  }
+  return out;
 }
 
 }  // namespace
@@ -93,17 +98,9 @@ void flatten_textures(const SceneDesc& scene, FlatScene& f) {
 SceneData FlatScene::view() const {
   SceneData sd;
   sd.header = &header;
-  sd.materials = materials.data();
-  sd.instances = instances.data();
-  sd.nodes = nodes.data();
-  sd.triangles = triangles.data();
-  sd.normals = normals.data();
-  sd.point_lights = point_lights.data();
-  sd.area_lights = area_lights.data();
-  sd.textures = textures.data();
-  sd.texels = texels.data();
-  sd.instance_textures = instance_textures.data();
-  sd.triangle_uvs = triangle_uvs.data();
+#define RT_VIEW_ARRAY(Type, name) sd.name = name.data();
+  RT_DATA_ARRAYS(RT_VIEW_ARRAY)
+#undef RT_VIEW_ARRAY
   return sd;
 }
 
@@ -111,8 +108,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   FlatScene f;
   f.materials = scene.materials;
-  f.point_lights = scene.point_lights;
-  f.area_lights = scene.area_lights;
+  f.lights = tagged_lights(scene);
   // Bottom level: one BVH per mesh, whatever the number of its instances.
   std::vector<int> blas_root(scene.meshes.size(), -1);
   std::vector<Aabb> blas_box(scene.meshes.size());
@@ -135,16 +131,6 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     if (mesh.smooth) vn = vertex_normals(mesh);
     for (int i : order) {
       const auto& t = mesh.triangles[i];
-      TriangleUV uv{};
-      if (!mesh.uvs.empty()) {
-        auto at = [&](int k) {
-          return float2{static_cast<float>(mesh.uvs[t[k]][0]), static_cast<float>(mesh.uvs[t[k]][1])};
-        };
-        uv.uv0 = at(0);
-        uv.uv1 = at(1);
-        uv.uv2 = at(2);
-      }
-      f.triangle_uvs.push_back(uv);
       Triangle tri;
       tri.v0 = to_float3(mesh.positions[t[0]]);
       tri.v1 = to_float3(mesh.positions[t[1]]);
@@ -157,6 +143,17 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
         tn.n2 = to_float3(vn[t[2]]);
       }
       f.normals.push_back(tn);
+      TriangleUV uv{};
+      if (!mesh.uvs.empty()) {
+        auto at = [&](int k) {
+          return make_float2(static_cast<float>(mesh.uvs[t[k]][0]),
+                             static_cast<float>(mesh.uvs[t[k]][1]));
+        };
+        uv.uv0 = at(0);
+        uv.uv1 = at(1);
+        uv.uv2 = at(2);
+      }
+      f.triangle_uvs.push_back(uv);
     }
   }
   // Top level: one leaf per instance, boxes covering the whole shutter interval.
@@ -184,7 +181,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
                  (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
                  (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
-    InstanceTextures it{};
+    InstanceTextures it;
     for (int k = 0; k < RT_MAX_OBJECT_TEXTURES; ++k)
       it.ids[k] = k < static_cast<int>(o.textures.size()) ? o.textures[k] : -1;
     unordered_textures.push_back(it);
@@ -202,18 +199,12 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   f.stats.nodes = f.nodes.size();
   f.stats.triangles = f.triangles.size();
   f.stats.instances = f.instances.size();
+  f.header.num_lights = static_cast<int>(f.lights.size());
   // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
-  if (f.nodes.empty()) f.nodes.emplace_back();
-  if (f.instances.empty()) f.instances.emplace_back();
-  if (f.instances.size() > f.instance_textures.size())
-    f.instance_textures.push_back(InstanceTextures{{-1, -1, -1, -1}});
-  if (f.triangles.empty()) f.triangles.emplace_back(), f.normals.emplace_back();
-  if (f.triangle_uvs.empty()) f.triangle_uvs.emplace_back();
-  if (f.textures.empty()) f.textures.emplace_back();
-  if (f.texels.empty()) f.texels.emplace_back();
-  if (f.materials.empty()) f.materials.emplace_back();
-  if (f.point_lights.empty()) f.point_lights.emplace_back();
-  if (f.area_lights.empty()) f.area_lights.emplace_back();
+#define RT_PAD_ARRAY(Type, name) \
+  if (f.name.empty()) f.name.emplace_back();
+  RT_DATA_ARRAYS(RT_PAD_ARRAY)
+#undef RT_PAD_ARRAY
   SceneHeader& h = f.header;
   h.background = to_float3(scene.background);
   h.ambient_light = to_float3(scene.ambient);
@@ -221,8 +212,6 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   h.intersection_epsilon = static_cast<float>(scene.intersection_epsilon);
   h.max_depth = scene.max_depth;
   h.background_texture = scene.background_texture;
-  h.num_point_lights = static_cast<int>(scene.point_lights.size());
-  h.num_area_lights = static_cast<int>(scene.area_lights.size());
   h.num_instances = static_cast<int>(f.stats.instances);
   h.seed = options.seed;
   h.filter = options.filter;
@@ -275,16 +264,13 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
   for (size_t i = 0; i < used.size(); ++i) {
     if (!used[i]) continue;
     const Material& m = scene.materials[i];
-    if (m.type == RT_MATERIAL_MIRROR) f |= RT_FEATURE_MIRROR;
-    if (m.type == RT_MATERIAL_CONDUCTOR) f |= RT_FEATURE_CONDUCTOR;
-    if (m.type == RT_MATERIAL_DIELECTRIC) f |= RT_FEATURE_DIELECTRIC;
+    f |= m.type;  // Type tags are feature bits (cl/features.h).
     if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
   }
+  for (const Light& l : tagged_lights(scene)) f |= l.type;
   bool textured = scene.background_texture >= 0;
   for (const ObjectDesc& o : scene.objects) textured = textured || !o.textures.empty();
   if (textured) f |= RT_FEATURE_TEXTURES;
-  if (!scene.point_lights.empty()) f |= RT_FEATURE_POINT_LIGHTS;
-  if (!scene.area_lights.empty()) f |= RT_FEATURE_AREA_LIGHTS;
   const CameraDesc& c = scene.cameras[camera];
   if (c.aperture > 0) f |= RT_FEATURE_DEPTH_OF_FIELD;
   if ((options.spp > 0 ? options.spp : c.samples) > 1) f |= RT_FEATURE_MULTISAMPLE;

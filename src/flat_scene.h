@@ -37,30 +37,26 @@ struct FlatStats {
   int tlas_depth = 0, max_blas_depth = 0;
 };
 
+#define RT_FLAT_SCENE_VECTOR(Type, name) std::vector<Type> name;
 struct FlatScene {
   SceneHeader header{};
-  std::vector<Material> materials;
-  std::vector<Instance> instances;
-  std::vector<BvhNode> nodes;
-  std::vector<Triangle> triangles;
-  std::vector<TriangleNormals> normals;
-  std::vector<PointLight> point_lights;
-  std::vector<AreaLight> area_lights;
-  std::vector<TextureDesc> textures;
-  std::vector<uint32_t> texels;  // Packed 8-bit RGB (cl/texture/image_texture.h).
-  std::vector<InstanceTextures> instance_textures;
-  std::vector<TriangleUV> triangle_uvs;
+  RT_DATA_ARRAYS(RT_FLAT_SCENE_VECTOR)  // The device arrays of cl/data_arrays.h.
   FlatStats stats;
   bool fast_math = false;  // Host-side only: how the OpenCL program is built.
 
   // Pointers into the arrays above, for the CPU reference.
   SceneData view() const;
 };
+#undef RT_FLAT_SCENE_VECTOR
 
 // Builds the BVHs and arrays; the camera is set separately (geometry is shared by every
 // camera of a file).
 FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options);
 void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options);
+
+// Appends the scene's images to flat.texels and a descriptor per TextureMap to
+// flat.textures (src/flat_textures.cpp).
+void flatten_textures(const SceneDesc& scene, FlatScene& flat);
 
 // The feature bits the scene needs for `camera` (cl/features.h).
 int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options);

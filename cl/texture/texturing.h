@@ -4,26 +4,26 @@
 #ifndef RT_TEXTURING_H
 #define RT_TEXTURING_H
 
-#include "../ray.h"
-#include "../scene_types.h"
-#include "../transform.h"
+#include "../surface.h"
 #include "checkerboard.h"
 #include "image_texture.h"
 #include "perlin.h"
 #include "tangent_frame.h"
 
-// Texture coordinates and world-space tangents at a hit whose world position is p. The
-// tangents follow the instance's transform as vectors do (normals need the inverse
-// transpose; tangents do not); motion blur only translates, so it changes neither.
-RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit,
-                                           float3 p) {
+// Texture coordinates and world-space tangents at surface point s. The tangents follow
+// the instance's transform as vectors do (normals need the inverse transpose; tangents do
+// not); motion blur only translates, so it changes neither.
+RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd,
+                                           RT_PRIVATE const SurfacePoint* s) {
+  Hit hit = s->hit;
+  float3 p = s->p;
   RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
   int transformed =
       RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
   TextureFrame f;
   if (hit.primitive < 0) {
     if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0)
-      p = p - inst->motion * ray.time;
+      p = p - inst->motion * s->time;
     f.p_obj = Normalize(transformed ? TransformPoint(inst->world_to_object, p) : p);
     f.uv = SphereUV(f.p_obj);
     SphereTangents(f.p_obj, &f.dpdu, &f.dpdv);
@@ -94,37 +94,35 @@ RT_DEVICE float3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Text
   return GradientBumpedNormal(n, g * (t->bump_factor / eps));
 }
 
-// Applies the instance's textures to *m and *n. Returns 1 when a replace_all texture
-// pastes its colour (*paste) in place of shading.
-RT_DEVICE int ApplyTextures(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit, float3 p,
-                            RT_PRIVATE Material* m, RT_PRIVATE float3* n,
-                            RT_PRIVATE float3* paste) {
-  RT_GLOBAL const InstanceTextures* list = &sd->instance_textures[hit.instance];
-  if (list->ids[0] < 0) return 0;
-  TextureFrame f = ComputeTextureFrame(sd, ray, hit, p);
+// Applies the instance's textures to the material parameters *m gathered at s and to its
+// shading normal s->n. A replace_all texture makes the material unlit, showing its colour.
+RT_DEVICE void ApplyTextures(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfacePoint* s,
+                             RT_PRIVATE Material* m) {
+  RT_GLOBAL const InstanceTextures* list = &sd->instance_textures[s->hit.instance];
+  if (list->ids[0] < 0) return;
+  TextureFrame f = ComputeTextureFrame(sd, s);
   // Procedural textures are evaluated at the object-space point of meshes but at the
   // world-space point of spheres, as the course's images show (cube_perlin, ellipsoids).
-  float3 q = hit.primitive >= 0 ? f.p_obj : p;
-  int pasted = 0;
+  float3 q = s->hit.primitive >= 0 ? f.p_obj : s->p;
   for (int k = 0; k < RT_MAX_OBJECT_TEXTURES && list->ids[k] >= 0; ++k) {
     RT_GLOBAL const TextureDesc* t = &sd->textures[list->ids[k]];
     if (t->decal == RT_DECAL_REPLACE_NORMAL) {
       float3 c = LookupImage(sd->texels, t, f.uv) - Vec3(127.5f);
-      *n = TangentToWorld(*n, f.dpdu, f.dpdv, Normalize(c));
+      s->n = TangentToWorld(s->n, f.dpdu, f.dpdv, Normalize(c));
     } else if (t->decal == RT_DECAL_BUMP_NORMAL) {
-      *n = BumpNormal(sd, t, hit, f, q, *n);
+      s->n = BumpNormal(sd, t, s->hit, f, q, s->n);
     } else if (t->decal != RT_DECAL_REPLACE_BACKGROUND) {
       float3 c = TextureColor(sd, t, f.uv, q);
       if (t->decal == RT_DECAL_REPLACE_KD) m->diffuse = c;
       if (t->decal == RT_DECAL_BLEND_KD) m->diffuse = (m->diffuse + c) * 0.5f;
       if (t->decal == RT_DECAL_REPLACE_KS) m->specular = c;
       if (t->decal == RT_DECAL_REPLACE_ALL) {
-        *paste = c;
-        pasted = 1;
+        m->diffuse = c;
+        m->unlit = 1;
+        m->type = RT_MATERIAL_PLAIN;  // Nothing reflects or refracts from it either.
       }
     }
   }
-  return pasted;
 }
 
 // The background seen at film position pixel_uv when a replace_background texture is
