@@ -9,7 +9,7 @@
 
 #include "errors.h"
 #include "image/read_ldr.h"
-#include "png_io.h"
+#include "io/png_io.h"
 #include "scene.h"
 
 namespace rt {

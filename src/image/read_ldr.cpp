@@ -9,7 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "png_io.h"
+#include "io/png_io.h"
 
 namespace rt {
 namespace {
