@@ -10,6 +10,10 @@ set(rt_convert_done "")
 foreach(line IN LISTS rt_course_lines)
   string(REGEX REPLACE "[ \t]+" ";" fields "${line}")
   list(POP_FRONT fields name scene reference criterion)
+  # hw1-hw3 only: rtconvert does not carry hw4's textures (yet), so hw4 cannot round-trip.
+  if(name MATCHES "^hw4")
+    continue()
+  endif()
   # One test per scene file and camera (the hw1_nobfc lines repeat hw1's files).
   list(FIND fields "--camera" at)
   set(camera 0)

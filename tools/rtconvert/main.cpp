@@ -86,6 +86,9 @@ int main(int argc, char** argv) {
       if (!scene.lights.empty())
         report.warn(o.input + ": " + std::to_string(scene.lights.size()) +
                     " lights of types other than point and area are not converted");
+      if (!scene.textures.empty())
+        report.warn(o.input + ": " + std::to_string(scene.textures.size()) +
+                    " texture maps and the texture coordinates are not converted");
       if (out == "glb") {
         rtconvert::export_with_assimp(scene, o.output, "glb2", report);
       } else if (out == "obj") {
