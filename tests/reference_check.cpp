@@ -3,10 +3,10 @@
 // pixels (or of 4x4 blocks): each metric over a regular subset estimates the same metric
 // over the whole image, at full resolution and at the scene's own sample count.
 //
-// usage: reference_check SCENE.xml REFERENCE.png [--camera N] [--cull-back-faces]
-//          [--criterion hw12|hw3] [--budget SAMPLES]
-// hw12: mean absolute error <= 1.0 levels and <= 1 % of pixels off by more than 8.
-// hw3:  after a 4x4 box downsample MAE <= 2.0, and full-resolution MAE <= 5.0.
+// The 8-bit conversion truncates as the course's renderer does, so the deterministic
+// images (hw1, hw2: one sample per pixel) are expected byte-identical but for a few
+// pixels; the thresholds (reference_check --help) sit just outside what the CPU reference
+// reaches on every course image (README, "Reference images").
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli.h"
 #include "flat_scene.h"
 #include "image_metrics.h"
 #include "png_io.h"
@@ -24,39 +25,40 @@
 namespace {
 
 struct Args {
-  std::string scene, reference, criterion = "hw12";
+  std::string criterion = "hw12";
   int camera = 0;
-  double budget = 0;  // Samples to spend; 0: the whole image.
+  double budget = 0;         // Samples to spend; 0: the whole image.
+  double min_identical = 0;  // Percent of byte-identical pixels; 0: the criterion's own.
   rt::Quantize quantize = rt::Quantize::kTruncate;
   rt::RenderOptions render;
 };
 
-Args parse(int argc, char** argv) {
-  Args a;
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: reference_check SCENE.xml REFERENCE.png [options]\n");
-    std::exit(2);
-  }
-  a.scene = argv[1];
-  a.reference = argv[2];
-  for (int i = 3; i < argc; ++i) {
-    std::string o = argv[i];
-    if (o == "--camera" && i + 1 < argc)
-      a.camera = std::atoi(argv[++i]);
-    else if (o == "--cull-back-faces")
-      a.render.cull_back_faces = true;
-    else if (o == "--criterion" && i + 1 < argc)
-      a.criterion = argv[++i];
-    else if (o == "--budget" && i + 1 < argc)
-      a.budget = std::atof(argv[++i]);
-    else if (o == "--quantize" && i + 1 < argc)
-      a.quantize = std::string(argv[++i]) == "round" ? rt::Quantize::kRound : rt::Quantize::kTruncate;
-    else {
-      std::fprintf(stderr, "reference_check: bad option '%s'\n", o.c_str());
-      std::exit(2);
-    }
-  }
-  return a;
+rt::OptionTable<Args> make_table() {
+  rt::OptionTable<Args> t(
+      "reference_check", "reference_check SCENE.xml REFERENCE.png [options]",
+      "Renders a course scene with the CPU reference (all of it, or a regular subset of\n"
+      "pixels within --budget samples) and checks it against the course's official image.\n"
+      "Exit status: 0 pass, 1 fail, 2 bad usage, 77 skipped (files missing).");
+  t.section("Check")
+      .choice("--criterion",
+              std::vector<std::pair<std::string, std::string>>{{"hw12", "hw12"}, {"hw3", "hw3"}},
+              RT_FIELD(criterion),
+              "hw12 (one sample per pixel, deterministic): MAE <= 0.2 levels, <= 0.5 % of "
+              "pixels off by more than 8, and --min-identical; hw3 (noisy): after a 4x4 box "
+              "downsample MAE <= 1.0, full-resolution MAE <= 2.0, |mean bias| <= 0.5")
+      .real("--min-identical", "P", rt::Range::closed(0, 100), RT_FIELD(min_identical),
+            "percent of pixels that must be byte-identical to the reference")
+      .default_is("99.9 for hw12, none for hw3")
+      .real("--budget", "SAMPLES", rt::Range::positive(), RT_FIELD(budget),
+            "render a regular subset of pixels (or of 4x4 blocks for hw3) costing about this "
+            "many samples")
+      .default_is("every pixel")
+      .integer("--camera", "N", rt::Range::closed(0, 1 << 20), RT_FIELD(camera),
+               "the camera to render")
+      .choice("--quantize", rt::quantize_choices(), RT_FIELD(quantize),
+              "radiance to 8 bits, as raytracer --quantize");
+  t.include(rt::device_option_table(), RT_FIELD(render));
+  return t;
 }
 
 // Renders the blocks (block x block pixels) whose block coordinates are multiples of
@@ -102,18 +104,21 @@ rt::Image8 render_subset(const rt::FlatScene& flat, int block, int stride, rt::Q
 }  // namespace
 
 int main(int argc, char** argv) {
-  Args a = parse(argc, argv);
-  for (const std::string& f : {a.scene, a.reference})
+  const rt::OptionTable<Args> table = make_table();
+  Args a;
+  std::vector<std::string> files = table.parse_or_exit(argc, argv, &a);
+  if (files.size() != 2) table.usage_error("needs SCENE.xml and REFERENCE.png");
+  for (const std::string& f : files)
     if (!std::ifstream(f)) {
       std::printf("SKIP: %s is not present (the course's scenes live in ../shared/scenes)\n",
                   f.c_str());
       return 77;
     }
   try {
-    rt::SceneDesc scene = rt::load_scene(a.scene);
+    rt::SceneDesc scene = rt::load_scene(files[0]);
     rt::FlatScene flat = rt::flatten_scene(scene, a.render);
     rt::set_camera(flat, scene, a.camera, a.render);
-    rt::Image8 ref = rt::read_png(a.reference);
+    rt::Image8 ref = rt::read_png(files[1]);
     const Camera& cam = flat.header.camera;
     if (ref.width != cam.width || ref.height != cam.height) {
       std::fprintf(stderr, "size mismatch: render %dx%d, reference %dx%d\n", cam.width, cam.height,
@@ -136,11 +141,13 @@ int main(int argc, char** argv) {
     std::printf(
         "%s: %dx%d, %d spp, stride %d (%.1f %% of the pixels): MAE %.3f, over 8: %.3f %%, "
         "max %d, identical %.3f %%, bias %+.3f | 4x4 downsampled: MAE %.3f, over 8: %.3f %%\n",
-        a.reference.c_str(), cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride),
+        files[1].c_str(), cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride),
         full.mae, 100 * full.frac_over, full.max_abs, 100 * full.frac_identical, bias, down.mae,
         100 * down.frac_over);
-    bool ok =
-        hw3 ? (down.mae <= 2.0 && full.mae <= 5.0) : (full.mae <= 1.0 && full.frac_over <= 0.01);
+    double min_identical = a.min_identical > 0 ? a.min_identical : hw3 ? 0 : 99.9;
+    bool ok = hw3 ? (down.mae <= 1.0 && full.mae <= 2.0 && std::abs(bias) <= 0.5)
+                  : (full.mae <= 0.2 && full.frac_over <= 0.005);
+    ok = ok && 100 * full.frac_identical >= min_identical;
     std::printf("%s (criterion %s)\n", ok ? "PASS" : "FAIL", a.criterion.c_str());
     return ok ? 0 : 1;
   } catch (const std::exception& e) {

@@ -130,6 +130,13 @@ std::string OptionText::help() const {
   return out;
 }
 
+std::string OptionText::section_help(const std::string& section) const {
+  std::string out;
+  for (const OptionInfo& o : infos_)
+    if (o.section == section) out += wrapped("  " + label(o), sentence(o));
+  return out;
+}
+
 std::string OptionText::markdown() const {
   std::string out = "| option | default | reaches | meaning |\n|---|---|---|---|\n";
   for (const OptionInfo& o : infos_) {

@@ -89,6 +89,8 @@ class OptionText {
   const std::vector<EnvVar>& environment() const { return env_; }
 
   std::string help() const;
+  // The help lines of one section's options alone, for a help text written around them.
+  std::string section_help(const std::string& section) const;
   // The README's table: one row per option (option, default, reaches, meaning), then one
   // per environment variable.
   std::string markdown() const;
