@@ -126,7 +126,6 @@ std::string OptionText::help() const {
     for (const EnvVar& e : env_) out += wrapped("  " + e.name, e.help);
   }
   out += "\n  --help, --help-markdown" + std::string(version_.empty() ? "" : ", --version") + "\n";
-  if (!epilogue_.empty()) out += "\n" + epilogue_;
   return out;
 }
 

@@ -83,8 +83,6 @@ class OptionText {
   const std::string& program() const { return program_; }
   const std::vector<OptionInfo>& options() const { return infos_; }
   void set_version(std::string v) { version_ = std::move(v); }
-  // Text printed after the options in --help (e.g. subcommands or notes).
-  void set_epilogue(std::string e) { epilogue_ = std::move(e); }
   void add_env(std::string name, std::string help) { env_.push_back({name, help}); }
   const std::vector<EnvVar>& environment() const { return env_; }
 
@@ -103,7 +101,7 @@ class OptionText {
                                 const std::function<void(size_t, const std::string*)>& apply,
                                 std::string* exit_text) const;
 
-  std::string program_, synopsis_, description_, version_, epilogue_;
+  std::string program_, synopsis_, description_, version_;
   std::vector<OptionInfo> infos_;
   std::vector<EnvVar> env_;
   std::string section_;
