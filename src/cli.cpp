@@ -84,7 +84,8 @@ OptionTable<CliOptions> make_raytracer_table() {
             "samples/s, rays/s and the feature bits")
       .flag("--moments", RT_FIELD(moments),
             "also write <image>.moments.exr: per-pixel sample count, mean and variance of the "
-            "unclamped radiance, and the first sample's hit (see compare --help)")
+            "unclamped radiance, and the first sample's hit (see compare --help and "
+            "src/io/moments.h)")
       .real("--resolution-scale", "F", Range::left_open(0, 16), RT_FIELD(resolution_scale),
             "render every camera at F times its resolution (rounded, at least 1), same view");
   t.section("Stopping")

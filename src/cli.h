@@ -8,13 +8,12 @@
 #include <utility>
 #include <vector>
 
+#include "device/device.h"
 #include "flat_scene.h"
-#include "png_io.h"
+#include "io/png_io.h"
 #include "util/args.h"
 
 namespace rt {
-
-enum class Device { kAuto, kCpu, kOpenCl };
 
 struct CliOptions {
   std::string scene;

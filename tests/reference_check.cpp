@@ -19,7 +19,7 @@
 #include "cli.h"
 #include "flat_scene.h"
 #include "image_metrics.h"
-#include "png_io.h"
+#include "io/png_io.h"
 #include "render.h"
 
 namespace {
