@@ -4,20 +4,13 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include "convert.h"
 #include "errors.h"
+#include "util/args.h"
 
 namespace {
-
-const char* kUsage =
-    "usage: rtconvert INPUT OUTPUT [--width N] [--quiet]\n"
-    "  INPUT.xml -> OUTPUT.glb | OUTPUT.obj | OUTPUT.pbrt | OUTPUT.xml   export\n"
-    "  INPUT.(any format Assimp reads: obj gltf glb fbx ply dae 3ds ...) -> OUTPUT.xml   import\n"
-    "  --width N   image width of cameras the importer makes (default 640)\n"
-    "  --quiet     no warnings on stderr\n"
-    "  --no-extras import glTF without rtconvert's extras.ceng795 (as another tool's file)\n"
-    "Exit status: 0 done, 1 input that cannot be converted (one line says why), 2 usage.\n";
 
 struct Options {
   std::string input, output;
@@ -26,41 +19,26 @@ struct Options {
   bool use_extras = true;
 };
 
-[[noreturn]] void usage_error(const std::string& what) {
-  std::fprintf(stderr, "rtconvert: %s\n%s", what.c_str(), kUsage);
-  std::exit(2);
-}
-
-// All of the command line in one place.
+// All of the command line in one place: the project's options table (src/util/args.h)
+// gives the parser, --help and the one-line usage errors (exit status 2).
 Options parse_args(int argc, char** argv) {
+  rt::OptionTable<Options> t(
+      "rtconvert", "rtconvert INPUT OUTPUT [options]",
+      "Converts between the course's XML scenes and other formats:\n"
+      "  INPUT.xml -> OUTPUT.glb | OUTPUT.obj | OUTPUT.pbrt | OUTPUT.xml   export\n"
+      "  INPUT.(any format Assimp reads: obj gltf glb fbx ply dae 3ds ...) -> OUTPUT.xml   import\n"
+      "Exit status: 0 done, 1 input that cannot be converted (one line says why), 2 usage.");
+  t.section("Conversion")
+      .integer("--width", "N", rt::Range::closed(1, 32768), RT_FIELD(width),
+               "image width of the cameras the importer makes")
+      .flag("--no-extras", RT_FIELD(use_extras),
+            "import glTF without rtconvert's extras.ceng795, as another tool's file", false)
+      .flag("--quiet", RT_FIELD(quiet), "no warnings on stderr");
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    } else if (a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "--no-extras") {
-      o.use_extras = false;
-    } else if (a == "--width") {
-      if (i + 1 >= argc) usage_error("--width needs a value");
-      char* end = nullptr;
-      long w = std::strtol(argv[++i], &end, 10);
-      if (*end || w < 1 || w > 32768)
-        usage_error(std::string("--width: '") + argv[i] + "' is not in [1, 32768]");
-      o.width = static_cast<int>(w);
-    } else if (a.size() > 1 && a[0] == '-') {
-      usage_error("unknown option '" + a + "'");
-    } else if (o.input.empty()) {
-      o.input = a;
-    } else if (o.output.empty()) {
-      o.output = a;
-    } else {
-      usage_error("one input and one output, got a third file '" + a + "'");
-    }
-  }
-  if (o.output.empty()) usage_error("needs an input and an output file");
+  std::vector<std::string> files = t.parse_or_exit(argc, argv, &o);
+  if (files.size() != 2) t.usage_error("needs an input and an output file");
+  o.input = files[0];
+  o.output = files[1];
   return o;
 }
 
