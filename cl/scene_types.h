@@ -23,7 +23,9 @@ typedef struct Material {
   float absorption_index;  // Imaginary part of a conductor's index (AbsorptionIndex).
   float roughness;
   int type;
-  int pad0, pad1, pad2;
+  int brdf;        // RT_BRDF_* model of cl/brdf.h; 0, the original Blinn-Phong, is the default.
+  int brdf_flags;  // RT_BRDF_NORMALIZED, RT_BRDF_KD_FRESNEL.
+  int pad0;
 } Material;
 
 typedef struct PointLight {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cl/scene_types.h"
+#include "image/tonemap.h"
 #include "mat4.h"
 
 namespace rt {
@@ -16,6 +17,9 @@ struct CameraDesc {
   int width = 0, height = 0;
   int samples = 1;
   double aperture = 0, focus_distance = 1;
+  // <Tonemap>: the film is written as HDR and tone mapped to the 8-bit image beside it.
+  bool tonemap = false;
+  PhotographicParams tonemap_params;
 };
 
 // A triangle mesh in its own object space; instances share it.
