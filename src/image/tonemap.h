@@ -32,4 +32,16 @@ inline double Luminance(double r, double g, double b) {
 // Throws std::invalid_argument on an image with other than 3 or 4 channels.
 Image8 TonemapPhotographic(const ImageF& hdr, const PhotographicParams& params);
 
+// The operator's two image-wide quantities (steps 1-3), so that pixels can be mapped one at
+// a time, e.g. a subset of pixels with the statistics of a whole reference image.
+struct PhotographicScale {
+  double scale = 1.0;   // key / log-average luminance.
+  double white2 = 0.0;  // Lwhite^2; 0: no burn-out.
+};
+PhotographicScale PhotographicStatistics(const ImageF& hdr, const PhotographicParams& params);
+
+// Steps 2-5 for one linear RGB pixel.
+void TonemapPixel(const float rgb[3], const PhotographicScale& s, const PhotographicParams& params,
+                  uint8_t out[3]);
+
 }  // namespace rt
