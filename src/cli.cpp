@@ -53,6 +53,9 @@ Sampling:
                          the refracted ray; choose: follow one, picked by Fresnel
   --fast-math            OpenCL: build with -cl-fast-relaxed-math (faster, less exact;
                          the CPU reference is always precise)
+  --quantize round|truncate
+                         how PNG values become 8-bit levels (default round; the
+                         course's reference images truncate)
 
 Geometry:
   --cull-back-faces      primary and reflected rays ignore triangles facing away (the
@@ -107,19 +110,26 @@ CliOptions parse_cli(int argc, char** argv) {
       std::exit(0);
     } else if (a == "--device") {
       std::string v = value();
-      if (v == "auto") o.device = Device::kAuto;
-      else if (v == "cpu") o.device = Device::kCpu;
-      else if (v == "cl") o.device = Device::kOpenCl;
-      else usage_error("--device: '" + v + "' is not one of auto, cl, cpu");
+      if (v == "auto")
+        o.device = Device::kAuto;
+      else if (v == "cpu")
+        o.device = Device::kCpu;
+      else if (v == "cl")
+        o.device = Device::kOpenCl;
+      else
+        usage_error("--device: '" + v + "' is not one of auto, cl, cpu");
     } else if (a == "--cl-device") {
       o.cl_device = value();
     } else if (a == "--list-devices") {
       o.list_devices = true;
     } else if (a == "--kernel") {
       std::string v = value();
-      if (v == "generic") o.generic_kernel = true;
-      else if (v == "specialized") o.generic_kernel = false;
-      else usage_error("--kernel: '" + v + "' is not one of generic, specialized");
+      if (v == "generic")
+        o.generic_kernel = true;
+      else if (v == "specialized")
+        o.generic_kernel = false;
+      else
+        usage_error("--kernel: '" + v + "' is not one of generic, specialized");
     } else if (a == "--no-kernel-cache") {
       o.kernel_cache = false;
     } else if (a == "--threads") {
@@ -147,31 +157,49 @@ CliOptions parse_cli(int argc, char** argv) {
       o.render.seed = static_cast<uint32_t>(parse_long("--seed", value(), 0, 4294967295L));
     } else if (a == "--filter") {
       std::string v = value();
-      if (v == "box") o.render.filter = RT_FILTER_BOX;
-      else if (v == "gaussian") o.render.filter = RT_FILTER_GAUSSIAN;
-      else usage_error("--filter: '" + v + "' is not one of box, gaussian");
+      if (v == "box")
+        o.render.filter = RT_FILTER_BOX;
+      else if (v == "gaussian")
+        o.render.filter = RT_FILTER_GAUSSIAN;
+      else
+        usage_error("--filter: '" + v + "' is not one of box, gaussian");
     } else if (a == "--filter-sigma") {
       const char* v = value();
       char* end = nullptr;
       double s = std::strtod(v, &end);
-      if (*end || !(s > 0 && s < 100)) usage_error(std::string("--filter-sigma: '") + v + "' is not in (0, 100)");
+      if (*end || !(s > 0 && s < 100))
+        usage_error(std::string("--filter-sigma: '") + v + "' is not in (0, 100)");
       o.render.filter_sigma = static_cast<float>(s);
     } else if (a == "--lens") {
       std::string v = value();
-      if (v == "square") o.render.lens = RT_LENS_SQUARE;
-      else if (v == "disk") o.render.lens = RT_LENS_DISK;
-      else usage_error("--lens: '" + v + "' is not one of square, disk");
+      if (v == "square")
+        o.render.lens = RT_LENS_SQUARE;
+      else if (v == "disk")
+        o.render.lens = RT_LENS_DISK;
+      else
+        usage_error("--lens: '" + v + "' is not one of square, disk");
     } else if (a == "--time-limit") {
       o.render.stop.time_limit_s = parse_positive("--time-limit", value());
     } else if (a == "--noise-target") {
       o.render.stop.noise_target = parse_positive("--noise-target", value());
     } else if (a == "--dielectric") {
       std::string v = value();
-      if (v == "split") o.render.fresnel_choice = false;
-      else if (v == "choose") o.render.fresnel_choice = true;
-      else usage_error("--dielectric: '" + v + "' is not one of split, choose");
+      if (v == "split")
+        o.render.fresnel_choice = false;
+      else if (v == "choose")
+        o.render.fresnel_choice = true;
+      else
+        usage_error("--dielectric: '" + v + "' is not one of split, choose");
     } else if (a == "--fast-math") {
       o.render.fast_math = true;
+    } else if (a == "--quantize") {
+      std::string v = value();
+      if (v == "round")
+        o.quantize = Quantize::kRound;
+      else if (v == "truncate")
+        o.quantize = Quantize::kTruncate;
+      else
+        usage_error("--quantize: '" + v + "' is not one of round, truncate");
     } else if (a == "--cull-back-faces") {
       o.render.cull_back_faces = true;
     } else if (a == "--background-on-secondary-miss") {

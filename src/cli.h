@@ -4,6 +4,7 @@
 #include <string>
 
 #include "flat_scene.h"
+#include "png_io.h"
 
 namespace rt {
 
@@ -21,8 +22,9 @@ struct CliOptions {
   int camera = -1;  // -1: every camera.
   bool quiet = false;
   bool stats = false;
-  bool moments = false;           // Also write <image>.moments.exr beside each PNG.
-  double resolution_scale = 1.0;  // Scales every camera's pixel count, same view.
+  bool moments = false;                  // Also write <image>.moments.exr beside each PNG.
+  double resolution_scale = 1.0;         // Scales every camera's pixel count, same view.
+  Quantize quantize = Quantize::kRound;  // How PNGs (not tone-mapped ones) become 8-bit.
   RenderOptions render;
 };
 

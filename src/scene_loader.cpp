@@ -13,7 +13,7 @@
 #include <set>
 #include <sstream>
 
-#include "cl/brdf.h"
+#include "cl/material/brdf.h"
 #include "errors.h"
 #include "ply.h"
 #include "scene.h"
@@ -372,6 +372,29 @@ void Loader::read_lights(const XMLElement* scene) {
       a.radiance = to_float3(radiance);
       a.area = static_cast<float>(length(normal));
       scene_.area_lights.push_back(a);
+    } else if (name == "DirectionalLight") {
+      Light d{};
+      d.type = RT_LIGHT_DIRECTIONAL;
+      const XMLElement* dir = child(l, "Direction", true);
+      d.normal = to_float3(normalize(nonzero(dir, vec3(dir))));
+      d.emission = to_float3(non_negative(child(l, "Radiance", true)));
+      scene_.lights.push_back(d);  // flatten_scene sets param0 from the scene's bounds.
+    } else if (name == "SpotLight") {
+      Light s{};
+      s.type = RT_LIGHT_SPOT;
+      s.position = to_float3(vec3(child(l, "Position", true)));
+      const XMLElement* dir = child(l, "Direction", true);
+      s.normal = to_float3(normalize(nonzero(dir, vec3(dir))));
+      s.emission = to_float3(non_negative(child(l, "Intensity", true)));
+      const XMLElement* cov = child(l, "CoverageAngle", true);
+      const XMLElement* fall = child(l, "FalloffAngle", true);
+      double coverage = number(cov), falloff = number(fall);
+      if (!(coverage > 0 && coverage <= 360)) fail_value(cov, "must lie in (0, 360] degrees");
+      if (!(falloff >= 0 && falloff <= coverage))
+        fail_value(fall, "must lie in [0, CoverageAngle] degrees");
+      s.param1 = static_cast<float>(std::cos(coverage * M_PI / 360.0));
+      s.param0 = static_cast<float>(std::cos(falloff * M_PI / 360.0));
+      scene_.lights.push_back(s);
     } else {
       warn(l, "unknown light type, ignored");
     }

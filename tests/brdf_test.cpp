@@ -1,4 +1,4 @@
-// Tests of the reflection models of assignment 6 (cl/brdf.h) against closed forms:
+// Tests of the reflection models of assignment 6 (cl/material/brdf.h) against closed forms:
 // directional albedo by quadrature (white furnace), reciprocity, the sampling routines
 // against their densities (chi-square at significance 1e-3), and the original Blinn-Phong
 // against the shading of assignments 1-5, bit for bit.
@@ -9,7 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "cl/brdf.h"
+#include "cl/material/blinn_phong.h"
+#include "cl/material/brdf.h"
 
 namespace rt {
 namespace {

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "cl/brdf.h"
+#include "cl/material/brdf.h"
 #include "errors.h"
 #include "scene.h"
 

@@ -13,9 +13,9 @@
 #include "light_sample.h"
 
 RT_DEVICE float SpotFalloff(RT_GLOBAL const Light* light, float cos_a) {
-  if (cos_a >= light->cos_falloff) return 1.0f;
-  if (cos_a <= light->cos_coverage) return 0.0f;
-  float t = (cos_a - light->cos_coverage) / (light->cos_falloff - light->cos_coverage);
+  if (cos_a >= light->param0) return 1.0f;
+  if (cos_a <= light->param1) return 0.0f;
+  float t = (cos_a - light->param1) / (light->param0 - light->param1);
   float t2 = t * t;
   return t2 * t2;
 }

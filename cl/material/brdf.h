@@ -10,7 +10,7 @@
 //   Torrance-Sparrow      f = kd / pi + ks D(a_h) F(b) G / (4 cos(t_i) cos(t_o)),
 //                         D = (p + 2) / (2 pi) cos^p(a_h), G the V-cavity masking term,
 //                         F the conductor Fresnel reflectance of the complex index n + ik
-//                         (materials.h) at the angle of incidence t_i, as the course's
+//                         (fresnel.h) at the angle of incidence t_i, as the course's
 //                         reference images show (not at b); `kdfresnel` weights kd by (1 - F)
 //
 // where a_r is the angle between wo and the mirror image of wi, a_h the angle between n and
@@ -24,7 +24,7 @@
 #ifndef RT_BRDF_H
 #define RT_BRDF_H
 
-#include "materials.h"  // FrConductor.
+#include "fresnel.h"  // FrConductor.
 
 #define RT_BRDF_ORIGINAL_BLINN_PHONG 0
 #define RT_BRDF_ORIGINAL_PHONG 1
