@@ -1,5 +1,6 @@
 // The scene elements of assignments 5 and 6 in the loader: <Tonemap>, <BRDFs> and the
-// materials that use them, degamma, lookAt cameras with a <Gaze>, and their bad values.
+// materials that use them, directional and spot lights, degamma, lookAt cameras with a
+// <Gaze>, and their bad values.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -139,6 +140,43 @@ TEST(LoaderHw56, Brdfs) {
   ExpectError(p, "Lafortune id=1: unknown BRDF type");
   p.brdfs = R"(<BRDFs><ModifiedPhong id="1" normalized="yes"/></BRDFs>)";
   ExpectError(p, "normalized='yes' must be true or false");
+}
+
+TEST(LoaderHw56, DirectionalAndSpotLights) {
+  Parts p;
+  p.lights = R"(<DirectionalLight id="1"><Direction>0 0 -2</Direction>
+    <Radiance>200 100 50</Radiance></DirectionalLight>
+    <SpotLight id="1"><Position>1 2 3</Position><Direction>0 -3 0</Direction>
+    <Intensity>600 600 600</Intensity><CoverageAngle>90</CoverageAngle>
+    <FalloffAngle>60</FalloffAngle></SpotLight>)";
+  SceneDesc s = Load(p);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.lights[0].type, RT_LIGHT_DIRECTIONAL);
+  EXPECT_EQ(s.lights[0].normal.z, -1.0f);  // Normalized.
+  EXPECT_EQ(s.lights[0].emission.y, 100.0f);
+  EXPECT_EQ(s.lights[1].type, RT_LIGHT_SPOT);
+  EXPECT_EQ(s.lights[1].position.z, 3.0f);
+  EXPECT_EQ(s.lights[1].normal.y, -1.0f);
+  EXPECT_FLOAT_EQ(s.lights[1].param0, std::cos(30 * M_PI / 180));  // Half the fall-off.
+  EXPECT_FLOAT_EQ(s.lights[1].param1, std::cos(45 * M_PI / 180));  // Half the coverage.
+}
+
+TEST(LoaderHw56, LightErrors) {
+  Parts p;
+  p.lights = R"(<DirectionalLight id="1"><Direction>0 0 0</Direction>
+    <Radiance>1 1 1</Radiance></DirectionalLight>)";
+  ExpectError(p, "Direction: '0 0 0' is a zero-length vector");
+  p.lights = R"(<DirectionalLight id="1"><Direction>0 0 1</Direction>
+    <Radiance>-1 1 1</Radiance></DirectionalLight>)";
+  ExpectError(p, "is negative");
+  const std::string spot = R"(<SpotLight id="2"><Position>0 0 0</Position>
+    <Direction>0 0 1</Direction><Intensity>1 1 1</Intensity>)";
+  p.lights = spot + "<CoverageAngle>30</CoverageAngle><FalloffAngle>40</FalloffAngle></SpotLight>";
+  ExpectError(p, "SpotLight id=2 > FalloffAngle: '40' must lie in [0, CoverageAngle]");
+  p.lights = spot + "<CoverageAngle>0</CoverageAngle><FalloffAngle>0</FalloffAngle></SpotLight>";
+  ExpectError(p, "CoverageAngle: '0' must lie in (0, 360]");
+  p.lights = spot + "<CoverageAngle>30</CoverageAngle></SpotLight>";
+  ExpectError(p, "FalloffAngle");
 }
 
 TEST(LoaderHw56, Degamma) {
