@@ -7,6 +7,7 @@
 #include "cl/light/light.h"
 #include "flat_scene.h"
 #include "render.h"
+#include "support/device_harness.h"
 
 namespace rt {
 namespace {
@@ -119,8 +120,7 @@ float Render(const rt::SceneDesc& s) {
   rt::RenderOptions opt;
   rt::FlatScene flat = rt::flatten_scene(s, opt);
   rt::set_camera(flat, s, 0, opt);
-  rt::Progress quiet(false, "", 0);
-  rt::RenderResult r = rt::render_cpu(flat, 1, quiet);
+  rt::RenderResult r = rt::test::render_cpu(flat, 1);
   return r.accum[0].sum.x / r.accum[0].sum.w;
 }
 

@@ -25,7 +25,7 @@
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
 #include "image_metrics.h"
-#include "png_io.h"
+#include "io/png_io.h"
 #include "render.h"
 
 namespace {

@@ -2,20 +2,15 @@
 // and, beside it, the PNG that the photographic operator makes of exactly that film; a
 // .png ImageName is written as before and --quantize chooses rounding or truncation.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cstdlib>
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
-#include "png_io.h"
-
-#ifndef RT_RAYTRACER_EXE
-#error "RT_RAYTRACER_EXE must name the raytracer executable"
-#endif
+#include "io/png_io.h"
+#include "support/cli_harness.h"
 
 namespace {
 
@@ -40,43 +35,32 @@ const char* kScene = R"(<Scene>
   </Faces></Mesh></Objects>
 </Scene>)";
 
-class TonemapOutput : public ::testing::Test {
+class TonemapOutput : public rt::test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rt_tonemap_output_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   int Render(const std::string& image_name, const std::string& flags = "") {
-    std::string xml = kScene;
-    xml.replace(xml.find("NAME"), 4, image_name);
-    std::ofstream(dir_ / "scene.xml") << xml;
-    std::string cmd = std::string(RT_RAYTRACER_EXE) + " " + (dir_ / "scene.xml").string() +
-                      " --device cpu --quiet --output-dir " + dir_.string() + " " + flags;
-    return std::system(cmd.c_str());
+    std::string scene = write("scene.xml", rt::test::replaced(kScene, "NAME", image_name));
+    return render(scene, flags).code;
   }
-  fs::path dir_;
+  fs::path Out(const std::string& name) const { return fs::path(out_) / name; }
 };
 
 TEST_F(TonemapOutput, ExrAndItsToneMappedPng) {
   ASSERT_EQ(Render("cube.exr"), 0);
-  ASSERT_TRUE(fs::exists(dir_ / "cube.exr"));
-  ASSERT_TRUE(fs::exists(dir_ / "cube.png"));
-  rt::ImageF film = rt::read_exr((dir_ / "cube.exr").string());
+  ASSERT_TRUE(fs::exists(Out("cube.exr")));
+  ASSERT_TRUE(fs::exists(Out("cube.png")));
+  rt::ImageF film = rt::read_exr((Out("cube.exr")).string());
   EXPECT_EQ(film.width, 24);
   EXPECT_EQ(film.height, 16);
   rt::PhotographicParams p;
   p.burn_percent = 1;
-  rt::Image8 png = rt::read_png((dir_ / "cube.png").string());
+  rt::Image8 png = rt::read_png((Out("cube.png")).string());
   EXPECT_EQ(png.rgb, rt::TonemapPhotographic(film, p).rgb);
   // The film is HDR: radiance beyond the PNG's white survives in the EXR.
   float peak = 0;
   for (float v : film.pixels) peak = std::max(peak, v);
   EXPECT_GT(peak, 255.0f);
-  for (const auto& e : fs::directory_iterator(dir_))  // No temporary left behind.
-    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  for (const std::string& name : output_files())  // No temporary left behind.
+    EXPECT_EQ(name.find(".tmp"), std::string::npos) << name;
 }
 
 // A .png ImageName ignores <Tonemap> (the specification tone maps HDR outputs only);
@@ -84,9 +68,9 @@ TEST_F(TonemapOutput, ExrAndItsToneMappedPng) {
 TEST_F(TonemapOutput, PngNameAndQuantize) {
   ASSERT_EQ(Render("round.png"), 0);
   ASSERT_EQ(Render("trunc.png", "--quantize truncate"), 0);
-  ASSERT_FALSE(fs::exists(dir_ / "round.exr"));
-  rt::Image8 r = rt::read_png((dir_ / "round.png").string());
-  rt::Image8 t = rt::read_png((dir_ / "trunc.png").string());
+  ASSERT_FALSE(fs::exists(Out("round.exr")));
+  rt::Image8 r = rt::read_png((Out("round.png")).string());
+  rt::Image8 t = rt::read_png((Out("trunc.png")).string());
   ASSERT_EQ(r.rgb.size(), t.rgb.size());
   int lower = 0;
   for (size_t i = 0; i < r.rgb.size(); ++i) {

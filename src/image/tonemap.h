@@ -4,7 +4,7 @@
 #pragma once
 
 #include "image/image.h"
-#include "png_io.h"
+#include "io/png_io.h"
 
 namespace rt {
 
