@@ -6,23 +6,24 @@
 #ifndef RT_FEATURES_H
 #define RT_FEATURES_H
 
-#define RT_FEATURE_SPHERES (1 << 0)              // Sphere objects (ellipsoids through transforms).
-#define RT_FEATURE_TRIANGLES (1 << 1)            // Meshes and Triangle objects.
-#define RT_FEATURE_TRANSFORMS (1 << 2)           // Objects whose transform is not the identity.
-#define RT_FEATURE_SMOOTH (1 << 3)               // Meshes with shadingMode="smooth".
-#define RT_FEATURE_POINT_LIGHTS (1 << 4)         // PointLight.
-#define RT_FEATURE_AREA_LIGHTS (1 << 5)          // AreaLight (square or parallelogram).
-#define RT_FEATURE_MIRROR (1 << 6)               // type="mirror".
-#define RT_FEATURE_CONDUCTOR (1 << 7)            // type="conductor" (complex-index Fresnel).
-#define RT_FEATURE_DIELECTRIC (1 << 8)           // type="dielectric": refraction, Fresnel, Beer.
-#define RT_FEATURE_ROUGHNESS (1 << 9)            // Roughness > 0: glossy reflection.
-#define RT_FEATURE_DEPTH_OF_FIELD (1 << 10)      // ApertureSize > 0.
-#define RT_FEATURE_MOTION_BLUR (1 << 11)         // MotionBlur on any object.
-#define RT_FEATURE_MULTISAMPLE (1 << 12)         // More than one sample per pixel: jittered.
-#define RT_FEATURE_DIRECTIONAL_LIGHTS (1 << 13)  // DirectionalLight.
-#define RT_FEATURE_SPOT_LIGHTS (1 << 14)         // SpotLight.
-#define RT_FEATURE_BRDF (1 << 15)  // A material with a BRDF other than the original Blinn-Phong.
-#define RT_FEATURE_ALL ((1 << 16) - 1)
+#define RT_FEATURE_SPHERES (1 << 0)          // Sphere objects (ellipsoids through transforms).
+#define RT_FEATURE_TRIANGLES (1 << 1)        // Meshes and Triangle objects.
+#define RT_FEATURE_TRANSFORMS (1 << 2)       // Objects whose transform is not the identity.
+#define RT_FEATURE_SMOOTH (1 << 3)           // Meshes with shadingMode="smooth".
+#define RT_FEATURE_POINT_LIGHTS (1 << 4)     // PointLight.
+#define RT_FEATURE_AREA_LIGHTS (1 << 5)      // AreaLight (square or parallelogram).
+#define RT_FEATURE_MIRROR (1 << 6)           // type="mirror".
+#define RT_FEATURE_CONDUCTOR (1 << 7)        // type="conductor" (complex-index Fresnel).
+#define RT_FEATURE_DIELECTRIC (1 << 8)       // type="dielectric": refraction, Fresnel, Beer.
+#define RT_FEATURE_ROUGHNESS (1 << 9)        // Roughness > 0: glossy reflection.
+#define RT_FEATURE_DEPTH_OF_FIELD (1 << 10)  // ApertureSize > 0.
+#define RT_FEATURE_MOTION_BLUR (1 << 11)     // MotionBlur on any object.
+#define RT_FEATURE_MULTISAMPLE (1 << 12)     // More than one sample per pixel: jittered.
+#define RT_FEATURE_TEXTURES (1 << 13)        // Textures: images, Perlin, checkerboard, bump/normal maps.
+#define RT_FEATURE_DIRECTIONAL_LIGHTS (1 << 14)  // DirectionalLight.
+#define RT_FEATURE_SPOT_LIGHTS (1 << 15)         // SpotLight.
+#define RT_FEATURE_BRDF (1 << 16)  // A material with a BRDF other than the original Blinn-Phong.
+#define RT_FEATURE_ALL ((1 << 17) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in
