@@ -24,21 +24,28 @@ typedef struct Material {
   float absorption_index;  // Imaginary part of a conductor's index (AbsorptionIndex).
   float roughness;
   int type;
-  int unlit;  // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
-  int pad1, pad2;
+  int unlit;       // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
+  int brdf;        // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
+  int brdf_flags;  // RT_BRDF_NORMALIZED, RT_BRDF_KD_FRESNEL.
 } Material;
 
 // Every light of the scene in one array, tagged by `type` (an RT_LIGHT_* tag); each type
 // reads the members it documents and cl/light/ samples it. Point lights come first, then
 // area lights, so the direct light at a point is summed in the order it always was.
 typedef struct Light {
-  float3 position;  // Point: the light's position. Area: the parallelogram's corner.
+  float3 position;  // Point, spot: the light's position. Area: the parallelogram's corner.
   float3 edge1;     // Area: the points are position + s * edge1 + t * edge2, s, t in [0, 1).
   float3 edge2;
-  float3 normal;                 // Area: unit normal (the light emits from both faces).
-  float3 emission;               // Point: intensity (power per unit solid angle). Area: radiance.
-  float area;                    // Area: |edge1 x edge2|.
-  float param0, param1, param2;  // Type-specific scalars (for example a spot's cone angles).
+  // Area: unit normal (the light emits from both faces). Directional: the unit direction
+  // the light travels in. Spot: the unit axis of its cone.
+  float3 normal;
+  // Point, spot: intensity (power per unit solid angle). Area, directional: radiance.
+  float3 emission;
+  float area;  // Area: |edge1 x edge2|.
+  // Type-specific scalars. Directional: param0, a length longer than the scene's
+  // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
+  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing.
+  float param0, param1, param2;
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;

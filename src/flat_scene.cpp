@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "cl/features.h"
+#include "cl/material/brdf.h"
 
 namespace rt {
 
@@ -87,10 +88,25 @@ std::vector<Light> tagged_lights(const SceneDesc& scene) {
     out.push_back(l);
   }
   for (Light l : scene.lights) {
-    l.sample_index = sampled++;
+    // Directional and spot lights draw no random numbers.
+    if (l.type != RT_LIGHT_DIRECTIONAL && l.type != RT_LIGHT_SPOT) l.sample_index = sampled++;
     out.push_back(l);
   }
   return out;
+}
+
+// A directional light's shadow segment runs from the shading point towards the light for
+// `distance`: twice the diagonal of the box around every object (at least 1) leaves the box
+// from any point inside it.
+void set_directional_distance(const std::vector<Aabb>& boxes, std::vector<Light>& lights) {
+  Aabb world;
+  for (const Aabb& b : boxes) world.grow(b);
+  double diagonal = 0;
+  for (int a = 0; a < 3 && !world.empty(); ++a)
+    diagonal += (double(world.hi[a]) - world.lo[a]) * (double(world.hi[a]) - world.lo[a]);
+  float distance = static_cast<float>(std::max(1.0, 2.0 * std::sqrt(diagonal)));
+  for (Light& l : lights)
+    if (l.type == RT_LIGHT_DIRECTIONAL) l.param0 = distance;
 }
 
 }  // namespace
@@ -200,6 +216,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   f.stats.triangles = f.triangles.size();
   f.stats.instances = f.instances.size();
   f.header.num_lights = static_cast<int>(f.lights.size());
+  set_directional_distance(boxes, f.lights);
   // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
 #define RT_PAD_ARRAY(Type, name) \
   if (f.name.empty()) f.name.emplace_back();
@@ -266,6 +283,7 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
     const Material& m = scene.materials[i];
     f |= m.type;  // Type tags are feature bits (cl/features.h).
     if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
+    if (m.brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) f |= RT_FEATURE_BRDF;
   }
   for (const Light& l : tagged_lights(scene)) f |= l.type;
   bool textured = scene.background_texture >= 0;
