@@ -38,7 +38,7 @@ constexpr int kMedianDepth = RT_BVH_MAX_DEPTH - 28;
 class Builder {
  public:
   Builder(const std::vector<Aabb>& boxes, const BvhOptions& options, int max_leaf, int prim_offset,
-          std::vector<BvhNode>& nodes, std::vector<int>& order)
+          std::vector<BinaryBvhNode>& nodes, std::vector<int>& order)
       : boxes_(boxes),
         opt_(options),
         max_leaf_(max_leaf),
@@ -64,7 +64,7 @@ class Builder {
  private:
   float centroid(int prim, int axis) const { return centroids_[prim * 3 + axis]; }
 
-  void make_leaf(BvhNode& n, int begin, int end) {
+  void make_leaf(BinaryBvhNode& n, int begin, int end) {
     n.first = offset_ + begin;
     n.count = end - begin;
   }
@@ -77,7 +77,7 @@ class Builder {
       int p = order_[i];
       cbox.grow(centroid(p, 0), centroid(p, 1), centroid(p, 2));
     }
-    BvhNode& n = nodes_[node_index];
+    BinaryBvhNode& n = nodes_[node_index];
     for (int k = 0; k < 3; ++k) {
       n.lo[k] = box.lo[k];
       n.hi[k] = box.hi[k];
@@ -167,7 +167,7 @@ class Builder {
   const std::vector<Aabb>& boxes_;
   const BvhOptions& opt_;
   int max_leaf_, offset_;
-  std::vector<BvhNode>& nodes_;
+  std::vector<BinaryBvhNode>& nodes_;
   std::vector<int>& order_;
   std::vector<float> centroids_;
   int max_depth_ = 0;
@@ -176,7 +176,8 @@ class Builder {
 }  // namespace
 
 BvhBuildResult build_bvh(const std::vector<Aabb>& boxes, const BvhOptions& options, int max_leaf,
-                         int prim_offset, std::vector<BvhNode>& nodes, std::vector<int>& order) {
+                         int prim_offset, std::vector<BinaryBvhNode>& nodes,
+                         std::vector<int>& order) {
   if (boxes.empty()) return {};
   return Builder(boxes, options, max_leaf, prim_offset, nodes, order).run();
 }
