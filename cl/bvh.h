@@ -24,34 +24,52 @@ RT_DEVICE LaneFloat LaneSplat(float x) {
 #ifdef __OPENCL_C_VERSION__
   return (LaneFloat)(x);
 #else
-  LaneFloat v;
-  for (int i = 0; i < RT_BVH_WIDTH; ++i) v[i] = x;
-  return v;
+  return x - LaneFloat{};  // Broadcasts x; x - (+0) is x for every x, -0 included.
 #endif
+}
+
+// The ray as the node test sees it: origin, reciprocal direction, and for each axis which
+// of a node's bounds (BvhNode.bounds) the ray meets first: the low face when the
+// direction is positive, the high face when negative (Williams et al. 2005).
+typedef struct NodeRay {
+  float3 o, inv_d;
+  int near_x, near_y, near_z, far_x, far_y, far_z;
+} NodeRay;
+
+RT_DEVICE NodeRay MakeNodeRay(float3 o, float3 d) {
+  NodeRay r;
+  r.o = o;
+  // A zero component gives +-inf, which the node test handles; -0 keeps its sign.
+  r.inv_d = make_float3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+  r.near_x = r.inv_d.x < 0.0f ? 3 : 0;
+  r.near_y = r.inv_d.y < 0.0f ? 4 : 1;
+  r.near_z = r.inv_d.z < 0.0f ? 5 : 2;
+  r.far_x = 3 - r.near_x;
+  r.far_y = 5 - r.near_y;
+  r.far_z = 7 - r.near_z;
+  return r;
 }
 
 // Slab test of every child box of a node at once; lane i of *tnear gets the entry distance
 // and the result's lane i is non-zero where the ray enters child i before tmax. The far
 // distance is enlarged by 2 * gamma(3) (pbrt-v4, Bounds3::IntersectP) so rounding never
 // culls a box the ray actually touches.
-RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, float3 o, float3 inv_d,
+RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r,
                                       float tmax, RT_PRIVATE LaneFloat* tnear) {
-  LaneFloat tx0 = (node->lo_x - o.x) * inv_d.x, tx1 = (node->hi_x - o.x) * inv_d.x;
-  LaneFloat ty0 = (node->lo_y - o.y) * inv_d.y, ty1 = (node->hi_y - o.y) * inv_d.y;
-  LaneFloat tz0 = (node->lo_z - o.z) * inv_d.z, tz1 = (node->hi_z - o.z) * inv_d.z;
+  float3 o = r->o, inv_d = r->inv_d;
+  LaneFloat nx = (node->bounds[r->near_x] - o.x) * inv_d.x;
+  LaneFloat ny = (node->bounds[r->near_y] - o.y) * inv_d.y;
+  LaneFloat nz = (node->bounds[r->near_z] - o.z) * inv_d.z;
+  LaneFloat fx = (node->bounds[r->far_x] - o.x) * inv_d.x;
+  LaneFloat fy = (node->bounds[r->far_y] - o.y) * inv_d.y;
+  LaneFloat fz = (node->bounds[r->far_z] - o.z) * inv_d.z;
   // A ray in the plane of a face (zero direction component, origin on the face) gives
-  // 0 * inf = NaN there and +-inf at the other face. It stays inside that slab for every t,
-  // so the NaN becomes the opposite infinity and the slab constrains nothing.
-  tx0 = tx0 != tx0 ? -tx1 : tx0;
-  tx1 = tx1 != tx1 ? -tx0 : tx1;
-  ty0 = ty0 != ty0 ? -ty1 : ty0;
-  ty1 = ty1 != ty1 ? -ty0 : ty1;
-  tz0 = tz0 != tz0 ? -tz1 : tz0;
-  tz1 = tz1 != tz1 ? -tz0 : tz1;
-  LaneFloat tn = LaneMax(LaneMax(LaneMin(tx0, tx1), LaneMin(ty0, ty1)),
-                         LaneMax(LaneMin(tz0, tz1), LaneSplat(0.0f)));
-  LaneFloat tf = LaneMin(LaneMin(LaneMax(tx0, tx1), LaneMax(ty0, ty1)),
-                         LaneMin(LaneMax(tz0, tz1), LaneSplat(tmax)));
+  // 0 * inf = NaN there. It stays inside that slab for every t, so the slab must constrain
+  // nothing, and it does not: the other face gives -inf as an entry or +inf as an exit,
+  // and a NaN enters LaneMax / LaneMin as the first operand, which they drop (they return
+  // the second operand when either is NaN).
+  LaneFloat tn = LaneMax(nx, LaneMax(ny, LaneMax(nz, LaneSplat(0.0f))));
+  LaneFloat tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
   tf = tf * 1.0000004f;
   *tnear = tn;
   return (tn <= tf) & (node->child != RT_BVH_EMPTY);
@@ -60,10 +78,10 @@ RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, float3 o, f
 // Tests a node's children and returns the nearest child hit (RT_BVH_POP if none), pushing
 // the others farthest first so they pop nearest first. Equal distances keep lane order,
 // the same on both devices.
-RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, float3 o, float3 inv_d, float tmax,
+RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, float tmax,
                             RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
   LaneFloat tnear;
-  LaneInt hits = IntersectChildBoxes(node, o, inv_d, tmax, &tnear);
+  LaneInt hits = IntersectChildBoxes(node, r, tmax, &tnear);
   float lane_t[RT_BVH_WIDTH];
   int lane_hit[RT_BVH_WIDTH], lane_child[RT_BVH_WIDTH];
   LaneStoreF(tnear, lane_t);
@@ -87,11 +105,6 @@ RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, float3 o, float3 inv_
   return sorted_child[0];
 }
 
-RT_DEVICE float3 SafeInverse(float3 d) {
-  // A zero component gives +-inf, which the slab test handles; -0 keeps its sign.
-  return make_float3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
-}
-
 // World-space origin of an instance's ray at the ray's time.
 RT_DEVICE float3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
   float3 o = ray.origin;
@@ -108,7 +121,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
   int instance = -1;                // The instance whose BVH we are in, or -1 at the top level.
   float3 o = ray.origin, d = ray.direction;
-  float3 inv_d = SafeInverse(d);
+  NodeRay nr = MakeNodeRay(o, d);
   TriangleRay tr = MakeTriangleRay(o, d);
   float tmax = ray.tmax;
   hit->instance = -1;
@@ -117,7 +130,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   for (;;) {
     int next = RT_BVH_POP;
     if (ref >= 0) {
-      next = VisitChildren(&sd->nodes[ref], o, inv_d, tmax, stack, &sp);
+      next = VisitChildren(&sd->nodes[ref], &nr, tmax, stack, &sp);
     } else if (instance < 0) {
       // A top-level leaf: exactly one instance.
       int ii = RtLeafFirst(ref);
@@ -141,7 +154,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
         instance = ii;
         o = io;
         d = id;
-        inv_d = SafeInverse(d);
+        nr = MakeNodeRay(o, d);
         tr = MakeTriangleRay(o, d);
         stack[sp++] = RT_STACK_RETURN_TO_WORLD;
         next = inst->blas_root;
@@ -169,7 +182,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
         instance = -1;
         o = ray.origin;
         d = ray.direction;
-        inv_d = SafeInverse(d);
+        nr = MakeNodeRay(o, d);
         tr = MakeTriangleRay(o, d);
         next = RT_BVH_POP;
       }

@@ -96,8 +96,7 @@ typedef struct Instance {
 #define RtLeafCount(ref) (((-2 - (ref)) & (RT_BVH_MAX_LEAF - 1)) + 1)
 
 typedef struct RT_ALIGN_NODE BvhNode {
-  LaneFloat lo_x, lo_y, lo_z;
-  LaneFloat hi_x, hi_y, hi_z;
+  LaneFloat bounds[6];  // lo x, y, z then hi x, y, z; lane i bounds child i.
   LaneInt child;
   LaneInt pad;  // Rounds the node to 128 (width 4) or 256 bytes (width 8): whole cache lines.
 } BvhNode;

@@ -68,12 +68,10 @@ class Collapser {
       int ref = RT_BVH_EMPTY;
       if (lane < n) {
         const BinaryBvhNode& c = bin_[kids[lane]];
-        set_lane(node.lo_x, lane, c.lo[0]);
-        set_lane(node.lo_y, lane, c.lo[1]);
-        set_lane(node.lo_z, lane, c.lo[2]);
-        set_lane(node.hi_x, lane, c.hi[0]);
-        set_lane(node.hi_y, lane, c.hi[1]);
-        set_lane(node.hi_z, lane, c.hi[2]);
+        for (int k = 0; k < 3; ++k) {
+          set_lane(node.bounds[k], lane, c.lo[k]);
+          set_lane(node.bounds[3 + k], lane, c.hi[k]);
+        }
         ref = c.count > 0 ? leaf_ref(c) : emit(kids[lane], depth + 1);
       }
       set_lane(node.child, lane, ref);
