@@ -22,6 +22,7 @@ struct Aabb {
 struct BvhOptions {
   int bins = 16;     // SAH bins per axis.
   int max_leaf = 4;  // Primitives per leaf the SAH may stop at (the top level uses 1).
+  int threads = 0;   // Build threads; 0: all cores. The tree does not depend on it.
 };
 
 // A binary node: leaf when count > 0 (primitives first..first+count-1), otherwise an

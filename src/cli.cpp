@@ -62,7 +62,7 @@ Geometry:
                          (default: only camera rays do)
   --no-scene-epsilon     ignore ShadowRayEpsilon; rely on the scale-aware offset alone
   --bvh-bins N           SAH bins per axis (default 16)
-  --bvh-leaf N           largest leaf the SAH may choose (default 4)
+  --bvh-leaf N           largest leaf the SAH may choose (default 4, at most 16)
 
   --help, --version
 )";
@@ -181,7 +181,7 @@ CliOptions parse_cli(int argc, char** argv) {
     } else if (a == "--bvh-bins") {
       o.render.bvh.bins = static_cast<int>(parse_long("--bvh-bins", value(), 2, 256));
     } else if (a == "--bvh-leaf") {
-      o.render.bvh.max_leaf = static_cast<int>(parse_long("--bvh-leaf", value(), 1, 64));
+      o.render.bvh.max_leaf = static_cast<int>(parse_long("--bvh-leaf", value(), 1, RT_BVH_MAX_LEAF));
     } else if (!a.empty() && a[0] == '-') {
       usage_error("unknown option '" + a + "'");
     } else if (o.scene.empty()) {
