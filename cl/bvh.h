@@ -72,7 +72,7 @@ RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE 
   LaneFloat tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
   tf = tf * 1.0000004f;
   *tnear = tn;
-  return (tn <= tf) & (node->child != RT_BVH_EMPTY);
+  return tn <= tf;  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
 }
 
 // Tests a node's children and returns the nearest child hit (RT_BVH_POP if none), pushing

@@ -1,5 +1,6 @@
 #include "bvh_wide.h"
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -66,6 +67,12 @@ class Collapser {
     std::memset(&node, 0, sizeof node);
     for (int lane = 0; lane < RT_BVH_WIDTH; ++lane) {
       int ref = RT_BVH_EMPTY;
+      // An empty lane's box is inverted to infinity: every ray enters it at +inf and
+      // leaves at -inf, whatever its direction's signs, so the node test never picks it.
+      for (int k = 0; k < 3; ++k) {
+        set_lane(node.bounds[k], lane, INFINITY);
+        set_lane(node.bounds[3 + k], lane, -INFINITY);
+      }
       if (lane < n) {
         const BinaryBvhNode& c = bin_[kids[lane]];
         for (int k = 0; k < 3; ++k) {
