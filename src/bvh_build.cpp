@@ -57,9 +57,14 @@ void parallel_for(int count, int threads, Fn fn) {
   for (auto& t : pool) t.join();
 }
 
+// Per-axis bins; fixed arrays, so the many small nodes near the leaves allocate nothing.
+constexpr int kMaxBins = 256;
 struct Bins {
-  std::vector<Aabb> box;
-  std::vector<int> count;
+  Aabb box[kMaxBins];
+  int count[kMaxBins];
+  void clear(int nb) {
+    for (int j = 0; j < nb; ++j) box[j] = Aabb(), count[j] = 0;
+  }
 };
 
 class Builder {
@@ -149,14 +154,18 @@ class Builder {
 
   // The bounds of the primitives' boxes and of their centroids over [begin, end).
   void bounds(int begin, int end, Aabb* box, Aabb* cbox) {
-    int n = end - begin, nc = chunks(n);
-    std::vector<Aabb> b(nc), c(nc);
-    parallel_for(nc, nc > 1 ? threads_ : 1, [&](int k) {
-      for (int i = begin + chunk_begin(k, n); i < begin + chunk_begin(k + 1, n); ++i) {
+    auto run = [&](int from, int to, Aabb* b, Aabb* c) {
+      for (int i = from; i < to; ++i) {
         int p = order_[i];
-        b[k].grow(boxes_[p]);
-        c[k].grow(centroid(p, 0), centroid(p, 1), centroid(p, 2));
+        b->grow(boxes_[p]);
+        c->grow(centroid(p, 0), centroid(p, 1), centroid(p, 2));
       }
+    };
+    int n = end - begin, nc = chunks(n);
+    if (nc == 1) return run(begin, end, box, cbox);
+    std::vector<Aabb> b(nc), c(nc);
+    parallel_for(nc, threads_, [&](int k) {
+      run(begin + chunk_begin(k, n), begin + chunk_begin(k + 1, n), &b[k], &c[k]);
     });
     for (int k = 0; k < nc; ++k) box->grow(b[k]), cbox->grow(c[k]);
   }
@@ -204,50 +213,52 @@ class Builder {
     build(ctx, left + 1, mid, end, depth + 1);
   }
 
-  // Bins the centroids of [begin, end) along every axis with a usable extent. Boxes merge
-  // by min / max and counts by sums, both exact, so chunking cannot change the result.
+  // Bins the centroids of [from, to) along every axis with a usable extent into axes[].
+  void bin_range(const Aabb& cbox, int from, int to, int nb, Bins axes[3]) {
+    for (int axis = 0; axis < 3; ++axis) {
+      float lo = cbox.lo[axis], extent = cbox.hi[axis] - lo;
+      axes[axis].clear(nb);
+      if (!(extent > 0)) continue;
+      float scale = nb / extent;
+      Bins& b = axes[axis];
+      for (int i = from; i < to; ++i) {
+        int p = order_[i];
+        int j = std::min(nb - 1, static_cast<int>((centroid(p, axis) - lo) * scale));
+        b.box[j].grow(boxes_[p]);
+        ++b.count[j];
+      }
+    }
+  }
+
+  // Bins [begin, end), in parallel chunks when long. Boxes merge by min / max and counts
+  // by sums, both exact, so chunking cannot change the result.
   void bin(const Aabb& cbox, int begin, int end, int nb, Bins axes[3]) {
     int n = end - begin, nc = chunks(n);
+    if (nc == 1) return bin_range(cbox, begin, end, nb, axes);
     std::vector<Bins> part(nc * 3);
-    parallel_for(nc, nc > 1 ? threads_ : 1, [&](int k) {
-      for (int axis = 0; axis < 3; ++axis) {
-        float lo = cbox.lo[axis], extent = cbox.hi[axis] - lo;
-        if (!(extent > 0)) continue;
-        float scale = nb / extent;
-        Bins& b = part[k * 3 + axis];
-        b.box.assign(nb, Aabb());
-        b.count.assign(nb, 0);
-        for (int i = begin + chunk_begin(k, n); i < begin + chunk_begin(k + 1, n); ++i) {
-          int p = order_[i];
-          int j = std::min(nb - 1, static_cast<int>((centroid(p, axis) - lo) * scale));
-          b.box[j].grow(boxes_[p]);
-          ++b.count[j];
-        }
-      }
+    parallel_for(nc, threads_, [&](int k) {
+      bin_range(cbox, begin + chunk_begin(k, n), begin + chunk_begin(k + 1, n), nb, &part[k * 3]);
     });
     for (int axis = 0; axis < 3; ++axis) {
-      axes[axis].box.assign(nb, Aabb());
-      axes[axis].count.assign(nb, 0);
-      for (int k = 0; k < nc; ++k) {
-        const Bins& b = part[k * 3 + axis];
-        for (size_t j = 0; j < b.count.size(); ++j) {
-          axes[axis].box[j].grow(b.box[j]);
-          axes[axis].count[j] += b.count[j];
+      axes[axis].clear(nb);
+      for (int k = 0; k < nc; ++k)
+        for (int j = 0; j < nb; ++j) {
+          axes[axis].box[j].grow(part[k * 3 + axis].box[j]);
+          axes[axis].count[j] += part[k * 3 + axis].count[j];
         }
-      }
     }
   }
 
   // Returns the partition point of the best binned-SAH split (and its axis), -2 when a
   // leaf is cheaper, or -1 when no split separates the centroids.
   int sah_split(const Aabb& box, const Aabb& cbox, int begin, int end, int* axis_out) {
-    const int nb = std::max(2, opt_.bins);
+    const int nb = std::min(kMaxBins, std::max(2, opt_.bins));
     float best_cost = 3.4e38f;
     int best_axis = -1, best_bin = -1;
     Bins axes[3];
     bin(cbox, begin, end, nb, axes);
-    std::vector<float> right_area(nb);
-    std::vector<int> right_count(nb);
+    float right_area[kMaxBins];
+    int right_count[kMaxBins];
     for (int axis = 0; axis < 3; ++axis) {
       if (!(cbox.hi[axis] - cbox.lo[axis] > 0)) continue;
       const Bins& bins = axes[axis];
