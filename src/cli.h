@@ -3,11 +3,10 @@
 
 #include <string>
 
+#include "device/device.h"
 #include "flat_scene.h"
 
 namespace rt {
-
-enum class Device { kAuto, kCpu, kOpenCl };
 
 struct CliOptions {
   std::string scene;
