@@ -99,7 +99,7 @@ for name in $scene_names; do
       label=$([ "$b" = "$build" ] && echo new || echo baseline)
       printf '| %s | %s | %s | %s | %.2f | %.0f | %.0f |\n' "$name" "$tris" "$dev" "$label" \
         "$(echo ${rate[$b]} | tr ' ' '\n' | median)" "$(echo ${bvh[$b]} | tr ' ' '\n' | median)" \
-        "$(echo "$(echo ${mem[$b]} | tr ' ' '\n' | median) / 1024" | bc -l)"
+        "$(echo ${mem[$b]} | tr ' ' '\n' | median | awk '{print $1 / 1024}')"
     done
     unset rate bvh mem
   done
