@@ -8,6 +8,7 @@
 #include "compat.h"
 #include "data_arrays.h"
 #include "features.h"
+#include "simd.h"
 #include "texture/texture_types.h"
 
 // A material's parameters as the file gives them; cl/material/material.h evaluates them
@@ -91,13 +92,24 @@ typedef struct Instance {
   int flags;
 } Instance;
 
-// A BVH node: leaf when count > 0 (primitives first..first+count-1), otherwise an
-// interior node whose children are first and first+1, split along axis -count.
-typedef struct BvhNode {
-  float lo[3];
-  int first;
-  float hi[3];
-  int count;
+// A node of the wide BVH: the boxes of up to RT_BVH_WIDTH children, one lane per child,
+// stored as one vector per bound (structure of arrays) so one node test checks every child
+// at once with aligned vector loads. child[i] is a node index (>= 0), RT_BVH_EMPTY for an
+// unused lane, or a leaf reference made by RtLeafRef (primitives first..first+count-1 of
+// the triangles at the bottom level, or one instance at the top level).
+#define RT_BVH_EMPTY (-1)
+#define RT_BVH_LEAF_COUNT_BITS 4
+#define RT_BVH_MAX_LEAF (1 << RT_BVH_LEAF_COUNT_BITS)
+// Leaves address primitives below this index (the leaf reference packs it in 27 bits).
+#define RT_BVH_MAX_PRIMITIVES ((1 << (31 - RT_BVH_LEAF_COUNT_BITS)) - 1)
+#define RtLeafRef(first, count) (-2 - (((first) << RT_BVH_LEAF_COUNT_BITS) | ((count)-1)))
+#define RtLeafFirst(ref) ((-2 - (ref)) >> RT_BVH_LEAF_COUNT_BITS)
+#define RtLeafCount(ref) (((-2 - (ref)) & (RT_BVH_MAX_LEAF - 1)) + 1)
+
+typedef struct RT_ALIGN_NODE BvhNode {
+  LaneFloat bounds[6];  // lo x, y, z then hi x, y, z; lane i bounds child i.
+  LaneInt child;
+  LaneInt pad;  // Rounds the node to 128 (width 4) or 256 bytes (width 8): whole cache lines.
 } BvhNode;
 
 typedef struct Triangle {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bvh_wide.h"
 #include "cl/features.h"
 #include "cl/material/brdf.h"
 
@@ -15,7 +16,7 @@ static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 112, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
-static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
+static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
 static_assert(sizeof(SceneHeader) == 192, "SceneHeader layout");
 static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
@@ -139,9 +140,11 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
       }
     std::vector<int> order;
     int offset = static_cast<int>(f.triangles.size());
-    BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, f.nodes, order);
-    blas_root[mi] = r.root;
-    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, r.depth);
+    std::vector<BinaryBvhNode> binary;
+    BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, binary, order);
+    WideBvhResult w = collapse_bvh(binary, r.root, f.nodes);
+    blas_root[mi] = w.root;
+    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
     for (auto& b : boxes) blas_box[mi].grow(b);
     std::vector<Vec3d> vn;
     if (mesh.smooth) vn = vertex_normals(mesh);
@@ -204,14 +207,16 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     boxes.push_back(transformed_box(sphere ? unit : blas_box[o.mesh], o.transform, o.motion));
   }
   std::vector<int> order;
-  BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, f.nodes, order);
+  std::vector<BinaryBvhNode> binary;
+  BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, binary, order);
+  WideBvhResult wide_top = collapse_bvh(binary, top.root, f.nodes);
   for (int i : order) {
     f.instances.push_back(unordered[i]);
     f.instance_textures.push_back(unordered_textures[i]);
   }
   flatten_textures(scene, f);
-  f.header.tlas_root = top.root;
-  f.stats.tlas_depth = top.depth;
+  f.header.tlas_root = wide_top.root;
+  f.stats.tlas_depth = wide_top.depth;
   f.stats.nodes = f.nodes.size();
   f.stats.triangles = f.triangles.size();
   f.stats.instances = f.instances.size();
