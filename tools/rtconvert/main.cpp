@@ -64,6 +64,11 @@ int main(int argc, char** argv) {
       if (!scene.lights.empty())
         report.warn(o.input + ": " + std::to_string(scene.lights.size()) +
                     " lights of types other than point and area are not converted");
+      int models = 0;
+      for (const Material& m : scene.materials) models += m.brdf != 0 || m.unlit != 0;
+      if (models)
+        report.warn(o.input + ": " + std::to_string(models) +
+                    " materials with a BRDF model or unlit: converted as Blinn-Phong");
       if (!scene.textures.empty())
         report.warn(o.input + ": " + std::to_string(scene.textures.size()) +
                     " texture maps and the texture coordinates are not converted");
