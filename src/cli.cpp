@@ -9,10 +9,13 @@
 namespace rt {
 namespace {
 
-const char* kUsage = R"(usage: raytracer SCENE.xml [options]
+const char* kUsage = R"(usage: raytracer SCENE.xml [SCENE2.xml ...] [options]
+       mpirun -np N raytracer SCENE.xml [SCENE2.xml ...] [options]
 
-Renders every camera of a METU CENG795 scene file to PNG (one file per camera,
-named by its ImageName).
+Renders every camera of each METU CENG795 scene file given to PNG (one file per
+camera, named by its ImageName); an animation is a list of frame files. Under
+mpirun (a build with MPI) the images, or tiles of them when there are fewer
+images than ranks, are spread over the ranks; the images are the same bytes.
 
 Device:
   --device auto|cl|cpu   auto (default): OpenCL when a usable device exists, else the
@@ -36,6 +39,10 @@ Output:
                          compare --help and src/io/moments.h for the channels)
   --resolution-scale F   render width*F x height*F pixels (rounded, at least 1) of the
                          same view, e.g. for quick tests (default 1)
+  --skip-existing        render only the images whose file does not exist yet (a job
+                         cut short resumes where it stopped)
+  --tile-rows N          under mpirun: rows of a tile when images are split among ranks
+                         (rounded up to a multiple of 32; default: automatic)
 
 Sampling:
   --spp N                samples per pixel, overriding the scene's NumSamples
@@ -141,6 +148,10 @@ CliOptions parse_cli(int argc, char** argv) {
       if (!*v || *end || !(f > 0 && f <= 16))
         usage_error(std::string("--resolution-scale: '") + v + "' is not in (0, 16]");
       o.resolution_scale = f;
+    } else if (a == "--skip-existing") {
+      o.skip_existing = true;
+    } else if (a == "--tile-rows") {
+      o.tile_rows = static_cast<int>(parse_long("--tile-rows", value(), 1, 1 << 20));
     } else if (a == "--spp") {
       o.render.spp = static_cast<int>(parse_long("--spp", value(), 1, 1 << 20));
     } else if (a == "--seed") {
@@ -184,13 +195,11 @@ CliOptions parse_cli(int argc, char** argv) {
       o.render.bvh.max_leaf = static_cast<int>(parse_long("--bvh-leaf", value(), 1, 64));
     } else if (!a.empty() && a[0] == '-') {
       usage_error("unknown option '" + a + "'");
-    } else if (o.scene.empty()) {
-      o.scene = a;
     } else {
-      usage_error("more than one scene file given ('" + o.scene + "', '" + a + "')");
+      o.scenes.push_back(a);
     }
   }
-  if (o.scene.empty() && !o.list_devices) usage_error("no scene file given");
+  if (o.scenes.empty() && !o.list_devices) usage_error("no scene file given");
   return o;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "device/device.h"
 #include "flat_scene.h"
@@ -9,7 +10,7 @@
 namespace rt {
 
 struct CliOptions {
-  std::string scene;
+  std::vector<std::string> scenes;  // Every camera of each is rendered (an animation: frames).
   std::string output_dir = ".";
   Device device = Device::kAuto;
   std::string cl_device;  // Index or name substring; empty: the first GPU, else the first device.
@@ -22,6 +23,8 @@ struct CliOptions {
   bool stats = false;
   bool moments = false;           // Also write <image>.moments.exr beside each PNG.
   double resolution_scale = 1.0;  // Scales every camera's pixel count, same view.
+  bool skip_existing = false;     // Render only the images whose file does not exist yet.
+  int tile_rows = 0;              // MPI: rows of a tile when images are split (0: automatic).
   RenderOptions render;
 };
 
