@@ -1,6 +1,7 @@
 #include "distributed/coordinator.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 #include "render_job.h"
@@ -68,12 +69,13 @@ PrimaryInfo* JobCoordinator::primary_rows(int32_t index) {
 }
 
 void JobCoordinator::complete(int rank, int32_t index, int spp, double busy_s,
-                              uint64_t remote_bytes) {
+                              uint64_t remote_bytes, double recv_s) {
   const TileTask& t = plan_.tasks[index];
   ImageFilm& f = film(index);
   busy_s_[rank] += busy_s;
   ++tasks_done_[rank];
   gathered_bytes_ += remote_bytes;
+  recv_s_ += recv_s;
   // Under a stop rule images are whole tasks, so one rank's count holds for every pixel.
   f.r.spp = spp;
   f.rows_left -= t.row_end - t.row_begin;
@@ -82,7 +84,9 @@ void JobCoordinator::complete(int rank, int32_t index, int spp, double busy_s,
   f.r.samples = static_cast<uint64_t>(f.r.accum.size()) * f.r.spp;
   for (const PixelAccum& a : f.r.accum) f.r.rays += a.rays;
   const PlannedImage& im = plan_.images[t.image];
+  const auto t0 = std::chrono::steady_clock::now();
   write_outputs(opt_, opt_.scenes[im.scene], im.camera, device_name_, f.r, im.path);
+  write_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ++images_written_;
   f.r = RenderResult();  // The image is on disk; its film is no longer needed.
 }
@@ -103,10 +107,10 @@ void JobCoordinator::finish(double wall_s) {
   std::fprintf(stderr,
                "stats: mpi: %zu ranks | %d of %zu images written | %zu tasks (tile rows %d) | "
                "wall %.3f s | busy mean %.3f s max %.3f s | imbalance %.1f %% | gathered %llu "
-               "bytes | busy per rank:",
+               "bytes in %.3f s | writing %.3f s | busy per rank:",
                busy_s_.size(), images_written_, plan_.images.size(), plan_.tasks.size(),
                plan_.tile_rows, wall_s, mean, most, most > 0 ? 100.0 * (1.0 - mean / most) : 0.0,
-               static_cast<unsigned long long>(gathered_bytes_));
+               static_cast<unsigned long long>(gathered_bytes_), recv_s_, write_s_);
   for (size_t r = 0; r < busy_s_.size(); ++r)
     std::fprintf(stderr, " %.3f (%d)", busy_s_[r], tasks_done_[r]);
   std::fprintf(stderr, "\n");

@@ -25,8 +25,10 @@ class JobCoordinator {
   PixelAccum* accum_rows(int32_t index);
   PrimaryInfo* primary_rows(int32_t index);
   // The task's film is in place: counts it, and writes its image when the image is whole.
-  // `remote_bytes`: what crossed the network for it (0 for rank 0's own tasks).
-  void complete(int rank, int32_t index, int spp, double busy_s, uint64_t remote_bytes);
+  // `remote_bytes`: what crossed the network for it (0 for rank 0's own tasks), in
+  // `recv_s` seconds of rank 0's time.
+  void complete(int rank, int32_t index, int spp, double busy_s, uint64_t remote_bytes,
+                double recv_s);
   // Records the first failure ("rank R: reason"); no task is handed out after it.
   void fail(int rank, const std::string& why);
   bool failed() const { return !failure_.empty(); }
@@ -49,6 +51,7 @@ class JobCoordinator {
   std::vector<double> busy_s_;
   std::vector<int> tasks_done_;
   uint64_t gathered_bytes_ = 0;
+  double recv_s_ = 0, write_s_ = 0;  // Rank 0's serial work: receiving bands, writing images.
   int images_written_ = 0;
   std::string failure_, device_name_;
   Progress progress_;

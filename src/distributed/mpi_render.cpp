@@ -229,10 +229,12 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
         ResultHeader h;
         MPI_Recv(&h, sizeof h, MPI_BYTE, src, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         const uint64_t pixels = job.task_pixels(h.task);
+        const auto t0 = std::chrono::steady_clock::now();
         recv_bytes(job.accum_rows(h.task), pixels * sizeof(PixelAccum), src, kTagFilm);
         recv_bytes(job.primary_rows(h.task), pixels * sizeof(PrimaryInfo), src, kTagFilm);
         try {
-          job.complete(src, h.task, h.spp, h.busy_s, pixels * kFilmBytesPerPixel);
+          job.complete(src, h.task, h.spp, h.busy_s, pixels * kFilmBytesPerPixel,
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         } catch (const std::exception& e) {
           job.fail(0, e.what());  // Writing the image failed on this rank.
         }
@@ -248,7 +250,7 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
         std::copy(r.accum.begin(), r.accum.end(), job.accum_rows(index));
         std::copy(r.primary.begin(), r.primary.end(), job.primary_rows(index));
         try {
-          job.complete(0, index, r.spp, r.busy_s, 0);
+          job.complete(0, index, r.spp, r.busy_s, 0, 0);
         } catch (const std::exception& e) {
           job.fail(0, e.what());
         }
