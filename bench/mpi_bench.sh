@@ -34,7 +34,7 @@ frames=("$here"/../shared/scenes/hw3/tap_water/xml/tap_0*.xml)
 [ -x "$rt" ] || { echo "no $rt (build first)"; exit 1; }
 [ -f "${frames[0]}" ] || { echo "the tap-water frames are missing (../shared/scenes)"; exit 1; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
+export OMPI_MCA_btl=self,vader
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 large_scale=$(awk -v s="$scale" 'BEGIN { print 2 * s }')

@@ -69,11 +69,10 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
     rt::write_outputs(opt, s.path, c, device->name(), r, out);
     if (opt.stats) print_stats(out, *device, s, flat, load, r);
     if (rt::stop_requested().load()) {
-      std::fprintf(stderr,
-                   "raytracer: interrupted: %s written with %d of %d samples per pixel%s\n",
-                   out.c_str(), r.spp, fc.samples,
-                   k + 1 < cameras.size() || !last_scene ? "; the cameras after it were not rendered"
-                                                         : "");
+      std::fprintf(
+          stderr, "raytracer: interrupted: %s written with %d of %d samples per pixel%s\n",
+          out.c_str(), r.spp, fc.samples,
+          k + 1 < cameras.size() || !last_scene ? "; the cameras after it were not rendered" : "");
       return false;
     }
   }

@@ -88,10 +88,9 @@ void write_outputs(const CliOptions& opt, const std::string& scene_path, int cam
                  static_cast<unsigned long long>(bad));
   write_image(out, r.width, r.height, r.rgb());
   if (opt.moments) {
-    MomentInfo info{opt.render.seed, r.spp,
-                    opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",
-                    device_name,     scene_path,
-                    camera};
+    MomentInfo info{
+        opt.render.seed, r.spp,      opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",
+        device_name,     scene_path, camera};
     write_moments(moments_path_for(out), moments_from_render(r, info));
   }
 }

@@ -15,7 +15,7 @@ set -uo pipefail
 rt="$1" mpiexec="$2" scenes="$3" work="$4" device="$5" case="$6"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # Loopback only: no network interfaces are probed, so containers need no setup.
-export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
+export OMPI_MCA_btl=self,vader
 
 fail() {
   echo "FAIL: $*"

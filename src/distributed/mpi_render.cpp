@@ -83,7 +83,9 @@ void serve(const CliOptions& opt, const NodePlace& place) {
     const ResultHeader h{m.index, r.spp, r.busy_s};
     MPI_Send(&h, sizeof h, MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD);
     send_bytes(r.accum.data(), r.accum.size() * sizeof(PixelAccum), 0, kTagFilm);
-    send_bytes(r.primary.data(), r.primary.size() * sizeof(PrimaryInfo), 0, kTagFilm);
+    // First-hit facts only go into moment files; without them the band is 48 of 80 bytes.
+    if (opt.moments)
+      send_bytes(r.primary.data(), r.primary.size() * sizeof(PrimaryInfo), 0, kTagFilm);
   }
 }
 
@@ -203,8 +205,10 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
     if (!job.next(rank, &m.index)) m.index = kStopTask;
     if (m.index != kStopTask) m.task = job.task(m.index);
     if (rank == 0) {
-      if (m.index == kStopTask) --running, local.reset();
-      else local->assign(m.index, m.task);
+      if (m.index == kStopTask)
+        --running, local.reset();
+      else
+        local->assign(m.index, m.task);
     } else {
       MPI_Send(&m, sizeof m, MPI_BYTE, rank, kTagTask, MPI_COMM_WORLD);
       if (m.index == kStopTask) --running;
@@ -231,10 +235,13 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
         const uint64_t pixels = job.task_pixels(h.task);
         const auto t0 = std::chrono::steady_clock::now();
         recv_bytes(job.accum_rows(h.task), pixels * sizeof(PixelAccum), src, kTagFilm);
-        recv_bytes(job.primary_rows(h.task), pixels * sizeof(PrimaryInfo), src, kTagFilm);
+        if (opt.moments)
+          recv_bytes(job.primary_rows(h.task), pixels * sizeof(PrimaryInfo), src, kTagFilm);
         try {
-          job.complete(src, h.task, h.spp, h.busy_s, pixels * kFilmBytesPerPixel,
-                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+          job.complete(
+              src, h.task, h.spp, h.busy_s,
+              pixels * (sizeof(PixelAccum) + (opt.moments ? sizeof(PrimaryInfo) : 0)),
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         } catch (const std::exception& e) {
           job.fail(0, e.what());  // Writing the image failed on this rank.
         }
@@ -280,8 +287,7 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
 }  // namespace
 
 bool launched_by_mpi() {
-  return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") ||
-         std::getenv("PMIX_RANK");
+  return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
 }
 
 int render_distributed(const CliOptions& opt) {
@@ -290,8 +296,10 @@ int render_distributed(const CliOptions& opt) {
   int status = 0;
   try {
     const NodePlace place = node_place(opt);
-    if (place.rank == 0) status = coordinate(opt, place);
-    else serve(opt, place);
+    if (place.rank == 0)
+      status = coordinate(opt, place);
+    else
+      serve(opt, place);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "raytracer: error: %s\n", e.what());
     MPI_Abort(MPI_COMM_WORLD, 1);

@@ -28,8 +28,8 @@ TileResult TileWorker::render(const TileTask& task) {
     const Camera& fc = flat_.header.camera;
     try {
       // Rank 0 holds the whole image's outputs; this rank the film and one band's copy.
-      device_->check_memory(flat_, 2 * static_cast<uint64_t>(fc.width) * fc.height *
-                                       kFilmBytesPerPixel);
+      device_->check_memory(flat_,
+                            2 * static_cast<uint64_t>(fc.width) * fc.height * kFilmBytesPerPixel);
     } catch (const std::exception& e) {
       throw std::runtime_error(name + ": " + e.what());
     }
@@ -52,8 +52,7 @@ TileResult TileWorker::render(const TileTask& task) {
   const size_t last = static_cast<size_t>(task.row_end) * cam.width;
   out.accum.assign(accum_.begin() + first, accum_.begin() + last);
   out.primary.assign(primary_.begin() + first, primary_.begin() + last);
-  out.busy_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.busy_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 
