@@ -11,6 +11,7 @@ namespace rt {
 namespace {
 
 std::atomic<bool> g_stop{false};
+bool g_quiet = false;  // Written before the handlers are installed, read only by them.
 static_assert(std::atomic<bool>::is_always_lock_free, "the flag is set from a signal handler");
 
 // Only async-signal-safe calls here: write, unlink (in remove_pending_temporaries), _exit.
@@ -21,6 +22,7 @@ void abort_now(int signal_number) {
 
 void on_signal(int signal_number) {
   if (signal_number == SIGINT && !g_stop.exchange(true)) {
+    if (g_quiet) return;
     const char msg[] =
         "\nraytracer: interrupt: finishing the current pass, then writing the images "
         "(Ctrl-C again to abort)\n";
@@ -33,7 +35,8 @@ void on_signal(int signal_number) {
 
 }  // namespace
 
-void install_interrupt_handlers() {
+void install_interrupt_handlers(bool quiet) {
+  g_quiet = quiet;
   struct sigaction sa;
   std::memset(&sa, 0, sizeof sa);
   sa.sa_handler = on_signal;

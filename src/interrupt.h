@@ -9,8 +9,9 @@
 
 namespace rt {
 
-// Installs the handlers; call once, first thing in main.
-void install_interrupt_handlers();
+// Installs the handlers; call once, early in main. Unless `quiet`, the first SIGINT says at
+// once that the pass is being finished.
+void install_interrupt_handlers(bool quiet);
 
 // Set by the first SIGINT; the scheduler's cancellation flag.
 const std::atomic<bool>& stop_requested();

@@ -98,7 +98,7 @@ int run(const rt::CliOptions& opt) {
 
 int main(int argc, char** argv) {
   rt::CliOptions opt = rt::parse_cli(argc, argv);
-  rt::install_interrupt_handlers();
+  rt::install_interrupt_handlers(opt.quiet);
   try {
     return run(opt);
   } catch (const std::bad_alloc&) {

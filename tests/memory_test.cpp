@@ -27,7 +27,6 @@ TEST_P(Memory, HugeResolutionIsRefusedBeforeRendering) {
   expect_one_error_line(r);
   EXPECT_NE(r.err.find("simple.png: 524288x524288 pixels need "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(" bytes)"), std::string::npos) << r.err;
-  EXPECT_LT(r.seconds, 5.0) << "refused before rendering";
   EXPECT_TRUE(output_files().empty());
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "cl/features.h"
+#include "cl_scene_buffers.h"
 #include "device/cl/cl_platform.h"
 #include "device/cl/cl_program.h"
 
@@ -12,12 +13,6 @@ namespace rt {
 namespace {
 
 size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
-
-template <typename T>
-cl::Buffer upload(const cl::Context& ctx, const std::vector<T>& v) {
-  return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * v.size(),
-                    const_cast<T*>(v.data()));
-}
 
 class ClDevice final : public RenderDevice {
  public:
@@ -68,8 +63,9 @@ class ClDevice final : public RenderDevice {
   ClProgram* program_ = nullptr;
   int width_ = 0, height_ = 0;
   size_t pixels_ = 0;
-  cl::Buffer header_, materials_, instances_, nodes_, triangles_, normals_, point_lights_,
-      area_lights_, accum_, primary_;
+  ClSceneBuffers scene_;
+  cl::Buffer accum_, primary_;
+  int launch_arg_ = 0;  // The first per-launch argument, after the scene's.
 };
 
 // Refuses, before anything is allocated, a scene the device cannot hold: each buffer within
@@ -78,22 +74,13 @@ class ClDevice final : public RenderDevice {
 void ClDevice::check_memory(const FlatScene& flat, uint64_t host_bytes) const {
   const uint64_t pixels =
       static_cast<uint64_t>(flat.header.camera.width) * flat.header.camera.height;
-  const uint64_t sizes[] = {
-      sizeof(SceneHeader),
-      sizeof(Material) * flat.materials.size(),
-      sizeof(Instance) * flat.instances.size(),
-      sizeof(BvhNode) * flat.nodes.size(),
-      sizeof(Triangle) * flat.triangles.size(),
-      sizeof(TriangleNormals) * flat.normals.size(),
-      sizeof(PointLight) * flat.point_lights.size(),
-      sizeof(AreaLight) * flat.area_lights.size(),
-      sizeof(PixelAccum) * pixels,
-      sizeof(PrimaryInfo) * pixels,
-  };
+  std::vector<std::pair<const char*, uint64_t>> sizes = scene_array_bytes(flat);
+  sizes.emplace_back("accum", sizeof(PixelAccum) * pixels);
+  sizes.emplace_back("primary", sizeof(PrimaryInfo) * pixels);
   uint64_t total = 0, largest = 0;
-  for (uint64_t s : sizes) {
-    total += s;
-    largest = std::max(largest, s);
+  for (const auto& buffer : sizes) {
+    total += buffer.second;
+    largest = std::max(largest, buffer.second);
   }
   check_memory_limit(flat, largest, max_alloc_, "OpenCL memory in one buffer",
                      "the " + format_bytes(max_alloc_) + " per buffer of " + name_);
@@ -116,31 +103,18 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
   auto start = std::chrono::steady_clock::now();
   ClProgram& p = programs_->get(info.build_options, &info.compile_ms, &info.cache_hit);
   try {
-    header_ = cl::Buffer(context_, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(SceneHeader),
-                         const_cast<SceneHeader*>(&flat.header));
-    materials_ = upload(context_, flat.materials);
-    instances_ = upload(context_, flat.instances);
-    nodes_ = upload(context_, flat.nodes);
-    triangles_ = upload(context_, flat.triangles);
-    normals_ = upload(context_, flat.normals);
-    point_lights_ = upload(context_, flat.point_lights);
-    area_lights_ = upload(context_, flat.area_lights);
+    scene_ = upload_scene(context_, flat);
     const size_t cells = std::max<size_t>(pixels_, 1);  // OpenCL has no empty buffers.
     accum_ = cl::Buffer(context_, CL_MEM_READ_WRITE, sizeof(PixelAccum) * cells);
     primary_ = cl::Buffer(context_, CL_MEM_READ_WRITE, sizeof(PrimaryInfo) * cells);
     queue_.enqueueFillBuffer(accum_, cl_uint(0), 0, sizeof(PixelAccum) * cells);
     queue_.enqueueFillBuffer(primary_, cl_uint(0), 0, sizeof(PrimaryInfo) * cells);
     cl::Kernel& k = p.kernel;
-    k.setArg(0, header_);
-    k.setArg(1, materials_);
-    k.setArg(2, instances_);
-    k.setArg(3, nodes_);
-    k.setArg(4, triangles_);
-    k.setArg(5, normals_);
-    k.setArg(6, point_lights_);
-    k.setArg(7, area_lights_);
-    k.setArg(11, accum_);
-    k.setArg(12, primary_);
+    // The kernel's arguments: the scene, then (row_begin, sample_begin, sample_end) per
+    // launch, then the two per-pixel outputs.
+    launch_arg_ = bind_scene(k, scene_, 0);
+    k.setArg(launch_arg_ + 3, accum_);
+    k.setArg(launch_arg_ + 4, primary_);
     program_ = &p;
     // A first use of a program may compile device code lazily at its first launch (PoCL
     // builds its work-group functions then): an empty launch (no samples) over the whole
@@ -160,9 +134,9 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
 
 void ClDevice::launch(const RenderWork& work) {
   cl::Kernel& k = program_->kernel;
-  k.setArg(8, work.row_begin);
-  k.setArg(9, work.sample_begin);
-  k.setArg(10, work.sample_end);
+  k.setArg(launch_arg_, work.row_begin);
+  k.setArg(launch_arg_ + 1, work.sample_begin);
+  k.setArg(launch_arg_ + 2, work.sample_end);
   const size_t lx = program_->local_x, ly = program_->local_y;
   queue_.enqueueNDRangeKernel(k, cl::NullRange,
                               cl::NDRange(round_up(static_cast<size_t>(width_), lx),

@@ -8,43 +8,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cl/film.h"
+#include "cl_scene_buffers.h"
 #include "io/file_util.h"
 
 namespace rt {
 namespace {
-
-// Appended to every program: reports the device's struct sizes so the host can verify
-// that both sides agree on the layouts before uploading anything.
-const char* const kLayoutKernel = R"RTCL(
-__kernel void rt_sizes(__global int* out) {
-  out[0] = (int)sizeof(SceneHeader);
-  out[1] = (int)sizeof(Material);
-  out[2] = (int)sizeof(Instance);
-  out[3] = (int)sizeof(BvhNode);
-  out[4] = (int)sizeof(Triangle);
-  out[5] = (int)sizeof(TriangleNormals);
-  out[6] = (int)sizeof(PointLight);
-  out[7] = (int)sizeof(AreaLight);
-  out[8] = (int)sizeof(PixelAccum);
-  out[9] = (int)sizeof(PrimaryInfo);
-  out[10] = (int)sizeof(Camera);
-}
-)RTCL";
-
-struct LayoutEntry {
-  const char* name;
-  size_t host_size;
-};
-const LayoutEntry kLayout[] = {
-    {"SceneHeader", sizeof(SceneHeader)}, {"Material", sizeof(Material)},
-    {"Instance", sizeof(Instance)},       {"BvhNode", sizeof(BvhNode)},
-    {"Triangle", sizeof(Triangle)},       {"TriangleNormals", sizeof(TriangleNormals)},
-    {"PointLight", sizeof(PointLight)},   {"AreaLight", sizeof(AreaLight)},
-    {"PixelAccum", sizeof(PixelAccum)},   {"PrimaryInfo", sizeof(PrimaryInfo)},
-    {"Camera", sizeof(Camera)},
-};
-constexpr int kLayoutCount = static_cast<int>(sizeof(kLayout) / sizeof(kLayout[0]));
 
 // FNV-1a, 64 bits; each part is prefixed with its length so concatenations differ.
 class Fnv1a {
@@ -153,21 +121,6 @@ cl::Program ClProgramCache::build(const std::string& source, const std::string& 
   return p;
 }
 
-void ClProgramCache::check_layout(ClProgram& p) {
-  cl::Kernel k(p.program, "rt_sizes");
-  cl::Buffer out(context_, CL_MEM_WRITE_ONLY, sizeof(cl_int) * kLayoutCount);
-  k.setArg(0, out);
-  queue_.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1), cl::NullRange);
-  std::vector<cl_int> sizes(kLayoutCount);
-  queue_.enqueueReadBuffer(out, CL_TRUE, 0, sizeof(cl_int) * kLayoutCount, sizes.data());
-  for (int i = 0; i < kLayoutCount; ++i)
-    if (static_cast<size_t>(sizes[i]) != kLayout[i].host_size)
-      throw std::runtime_error("OpenCL: struct " + std::string(kLayout[i].name) + " is " +
-                               std::to_string(sizes[i]) + " bytes on " + name_ + " but " +
-                               std::to_string(kLayout[i].host_size) +
-                               " bytes on the host (layout mismatch)");
-}
-
 ClProgram& ClProgramCache::get(const std::string& options, double* compile_ms, bool* cache_hit) {
   auto it = programs_.find(options);
   if (it != programs_.end()) {
@@ -177,7 +130,7 @@ ClProgram& ClProgramCache::get(const std::string& options, double* compile_ms, b
   }
   auto t0 = std::chrono::steady_clock::now();
   ClProgram p;
-  p.program = build(std::string(kKernelSource) + kLayoutKernel, options, cache_hit);
+  p.program = build(kKernelSource, options, cache_hit);
   try {
     p.kernel = cl::Kernel(p.program, "render");
     size_t max_wg = p.kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device_);
@@ -193,7 +146,8 @@ ClProgram& ClProgramCache::get(const std::string& options, double* compile_ms, b
       p.local_x = std::max<size_t>(1, std::min(p.local_x, max_items[0]));
       p.local_y = std::max<size_t>(1, std::min(p.local_y, max_items[1]));
     }
-    check_layout(p);
+    // Host and device must agree on every struct before anything is uploaded.
+    check_scene_layout(context_, queue_, p.program, name_);
   } catch (const cl::Error& e) {
     throw std::runtime_error("OpenCL: " + describe_cl_error(e) + " on " + name_);
   }

@@ -1,5 +1,6 @@
 // Building the render program for one OpenCL device: build options, an on-disk cache of
-// compiled binaries, the check that host and device agree on every struct layout, and the
+// compiled binaries, the check that host and device agree on every struct layout
+// (check_scene_layout of cl_scene_buffers.h), and the
 // work-group shape. Programs are kept in memory by build options, so cameras and renders
 // that need the same features build once.
 #pragma once
@@ -31,7 +32,6 @@ class ClProgramCache {
 
  private:
   cl::Program build(const std::string& source, const std::string& options, bool* hit);
-  void check_layout(ClProgram& p);
 
   cl::Context context_;
   cl::Device device_;
