@@ -86,7 +86,7 @@ void write_outputs(const CliOptions& opt, const std::string& scene_path, int cam
     std::fprintf(stderr, "warning: %s: %llu samples gave NaN or infinite radiance (left out)\n",
                  std::filesystem::path(out).filename().c_str(),
                  static_cast<unsigned long long>(bad));
-  write_image(out, r.width, r.height, r.rgb());
+  write_image(out, r.width, r.height, r.rgb(), opt.quantize);
   if (opt.moments) {
     MomentInfo info{
         opt.render.seed, r.spp,      opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",
