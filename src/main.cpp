@@ -66,7 +66,7 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
         rt::render_camera(*device, flat, progress, opt.render.stop, &rt::stop_requested(), &load);
     progress.finish();
     const std::string out = rt::image_path(opt, s, c);
-    rt::write_outputs(opt, s.path, c, device->name(), r, out);
+    rt::write_outputs(opt, s.path, c, s.desc.cameras[c], device->name(), r, out);
     if (opt.stats) print_stats(out, *device, s, flat, load, r);
     if (rt::stop_requested().load()) {
       std::fprintf(

@@ -10,8 +10,10 @@
 #include <stdexcept>
 
 #include "errors.h"
+#include "image/tonemap.h"
 #include "io/image_output.h"
 #include "io/moments.h"
+#include "io/png_io.h"
 
 namespace rt {
 
@@ -81,12 +83,25 @@ uint64_t output_bytes(uint64_t pixels, bool moments) {
 }
 
 void write_outputs(const CliOptions& opt, const std::string& scene_path, int camera,
-                   const std::string& device_name, const RenderResult& r, const std::string& out) {
+                   const CameraDesc& cam, const std::string& device_name, const RenderResult& r,
+                   const std::string& out) {
   if (uint64_t bad = r.nonfinite())
     std::fprintf(stderr, "warning: %s: %llu samples gave NaN or infinite radiance (left out)\n",
                  std::filesystem::path(out).filename().c_str(),
                  static_cast<unsigned long long>(bad));
   write_image(out, r.width, r.height, r.rgb(), opt.quantize);
+  // hw5: a camera with <Tonemap> whose image is HDR also gets the photographic operator's
+  // 8-bit image of the same film, beside it with the extension .png.
+  if (cam.tonemap && is_exr_path(out)) {
+    std::filesystem::path png = out;
+    png.replace_extension(".png");
+    ImageF film;
+    film.width = r.width;
+    film.height = r.height;
+    film.max_value = 0.0f;
+    film.pixels = r.rgb();
+    write_png(png.string(), TonemapPhotographic(film, cam.tonemap_params));
+  }
   if (opt.moments) {
     MomentInfo info{
         opt.render.seed, r.spp,      opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",

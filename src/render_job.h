@@ -41,7 +41,9 @@ uint64_t output_bytes(uint64_t pixels, bool moments);
 
 // Writes the image (and with --moments its moment file) of camera `camera` of the scene
 // file `scene_path` to `out`, atomically, and warns about non-finite samples.
+// A camera with <Tonemap> whose image is HDR also gets its tone-mapped PNG.
 void write_outputs(const CliOptions& opt, const std::string& scene_path, int camera,
-                   const std::string& device_name, const RenderResult& r, const std::string& out);
+                   const CameraDesc& cam, const std::string& device_name, const RenderResult& r,
+                   const std::string& out);
 
 }  // namespace rt

@@ -85,7 +85,7 @@ void JobCoordinator::complete(int rank, int32_t index, int spp, double busy_s,
   for (const PixelAccum& a : f.r.accum) f.r.rays += a.rays;
   const PlannedImage& im = plan_.images[t.image];
   const auto t0 = std::chrono::steady_clock::now();
-  write_outputs(opt_, opt_.scenes[im.scene], im.camera, device_name_, f.r, im.path);
+  write_outputs(opt_, opt_.scenes[im.scene], im.camera, im.desc, device_name_, f.r, im.path);
   write_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ++images_written_;
   f.r = RenderResult();  // The image is on disk; its film is no longer needed.

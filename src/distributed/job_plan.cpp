@@ -19,7 +19,7 @@ JobPlan plan_job(const CliOptions& opt, int ranks) {
     const JobScene scene = load_job_scene(opt.scenes[s], opt, true);
     for (int c : job_cameras(opt, scene)) {
       const CameraDesc& cam = scene.desc.cameras[c];
-      plan.images.push_back({s, c, cam.width, cam.height, image_path(opt, scene, c)});
+      plan.images.push_back({s, c, cam.width, cam.height, image_path(opt, scene, c), cam});
     }
   }
   const bool stop_rule = opt.render.stop.time_limit_s > 0 || opt.render.stop.noise_target > 0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "scene.h"
 
 namespace rt {
 
@@ -18,6 +19,7 @@ struct PlannedImage {
   int scene = 0, camera = 0;  // Index into CliOptions::scenes; camera in that file.
   int width = 0, height = 0;
   std::string path;  // The output file.
+  CameraDesc desc;   // The camera as loaded (its outputs, e.g. tone mapping, follow it).
 };
 
 // A band of rows [row_begin, row_end) of one image, all of its samples.
