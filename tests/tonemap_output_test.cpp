@@ -66,7 +66,7 @@ TEST_F(TonemapOutput, ExrAndItsToneMappedPng) {
 // A .png ImageName ignores <Tonemap> (the specification tone maps HDR outputs only);
 // truncation differs from rounding by at most one level, and only downwards.
 TEST_F(TonemapOutput, PngNameAndQuantize) {
-  ASSERT_EQ(Render("round.png"), 0);
+  ASSERT_EQ(Render("round.png", "--quantize round"), 0);
   ASSERT_EQ(Render("trunc.png", "--quantize truncate"), 0);
   ASSERT_FALSE(fs::exists(Out("round.exr")));
   rt::Image8 r = rt::read_png((Out("round.png")).string());
