@@ -48,9 +48,11 @@ OptionTable<RenderOptions> make_device_table() {
 
 OptionTable<CliOptions> make_raytracer_table() {
   OptionTable<CliOptions> t(
-      "raytracer", "raytracer SCENE.xml [options]",
-      "Renders every camera of a METU CENG795 scene file to a PNG named by its ImageName\n"
-      "(8-bit RGB). Exit status: 0 done, 1 bad input or a failed render, 2 bad usage.");
+      "raytracer", "raytracer SCENE.xml [SCENE2.xml ...] [options]",
+      "Renders every camera of each METU CENG795 scene file given (an animation: its frame\n"
+      "files) to a PNG named by its ImageName (8-bit RGB). Under mpirun (a build with MPI)\n"
+      "the images, or tiles of them, are spread over the ranks, with the same bytes.\n"
+      "Exit status: 0 done, 1 bad input or a failed render, 2 bad usage.");
   t.set_version(RT_VERSION);
   t.section("Device selection")
       .choice("--device",
@@ -87,7 +89,14 @@ OptionTable<CliOptions> make_raytracer_table() {
             "unclamped radiance, and the first sample's hit (see compare --help and "
             "src/io/moments.h)")
       .real("--resolution-scale", "F", Range::left_open(0, 16), RT_FIELD(resolution_scale),
-            "render every camera at F times its resolution (rounded, at least 1), same view");
+            "render every camera at F times its resolution (rounded, at least 1), same view")
+      .flag("--skip-existing", RT_FIELD(skip_existing),
+            "render only the images whose file does not exist yet, so a job cut short "
+            "(interrupt, node failure, a cluster's time limit) resumes where it stopped")
+      .integer("--tile-rows", "N", Range::closed(1, 1 << 20), RT_FIELD(tile_rows),
+               "under mpirun: rows of a tile when images are cut among the ranks (rounded up "
+               "to a multiple of 32); the images do not depend on it")
+      .default_is("automatic");
   t.section("Stopping")
       .real("--time-limit", "S", Range::positive(), RT_FIELD(render.stop.time_limit_s),
             "stop sampling when the next pass would end after S seconds (every pixel keeps "
@@ -109,6 +118,9 @@ OptionTable<CliOptions> make_raytracer_table() {
               std::vector<std::pair<std::string, bool>>{{"generic", true}, {"specialized", false}},
               RT_FIELD(generic_kernel),
               "compile the all-features kernel, or one specialized to the scene's features");
+  t.add_env("RT_MPI_FAULT",
+            "a test hook under mpirun: <rank>:kill or <rank>:fail makes that rank (not 0) die "
+            "by SIGKILL or fail at its second task");
   t.add_env("RT_CL_OPTIONS",
             "extra OpenCL build options appended to the kernel's (a developer's knob, e.g. "
             "-cl-opt-disable); part of the kernel cache key");
@@ -137,11 +149,8 @@ const OptionTable<CliOptions>& raytracer_option_table() {
 CliOptions parse_cli(int argc, char** argv) {
   const OptionTable<CliOptions>& table = raytracer_option_table();
   CliOptions o;
-  std::vector<std::string> scenes = table.parse_or_exit(argc, argv, &o);
-  if (scenes.size() > 1)
-    table.usage_error("more than one scene file given ('" + scenes[0] + "', '" + scenes[1] + "')");
-  if (!scenes.empty()) o.scene = scenes[0];
-  if (o.scene.empty() && !o.list_devices) table.usage_error("no scene file given");
+  o.scenes = table.parse_or_exit(argc, argv, &o);
+  if (o.scenes.empty() && !o.list_devices) table.usage_error("no scene file given");
   return o;
 }
 

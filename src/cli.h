@@ -16,7 +16,7 @@
 namespace rt {
 
 struct CliOptions {
-  std::string scene;
+  std::vector<std::string> scenes;  // Every camera of each is rendered (an animation: frames).
   std::string output_dir = ".";
   Device device = Device::kAuto;
   std::string cl_device;  // Index or name substring; empty: the first GPU, else the first device.
@@ -30,6 +30,8 @@ struct CliOptions {
   bool moments = false;                     // Also write <image>.moments.exr beside each PNG.
   double resolution_scale = 1.0;            // Scales every camera's pixel count, same view.
   Quantize quantize = Quantize::kTruncate;  // Radiance to 8 bits, as the course's renderer.
+  bool skip_existing = false;               // Render only the images whose file does not exist yet.
+  int tile_rows = 0;  // MPI: rows of a tile when images are cut (0: automatic).
   RenderOptions render;
 };
 

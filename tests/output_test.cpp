@@ -6,8 +6,10 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -117,6 +119,35 @@ TEST_F(Outputs, LongImageNameIsWritten) {
   Outcome r = render(scene);
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(output_files(), std::vector<std::string>{name});
+}
+
+// Several scene files (an animation's frames) are rendered in order in one run, each image
+// the same bytes as when its file is rendered alone.
+TEST_F(Outputs, EverySceneFileGivenIsRendered) {
+  const std::string a = write("a.xml", replaced(kTinyScene, "simple.png<", "frame_a.png<"));
+  const std::string b = write("b.xml", replaced(kTinyScene, "simple.png<", "frame_b.png<"));
+  ASSERT_EQ(render(b).code, 0);
+  const std::string alone = slurp(dir_ / "out" / "frame_b.png");
+  std::filesystem::remove(dir_ / "out" / "frame_b.png");
+  Outcome r = run(quote(a) + " " + quote(b) + " --device cpu --quiet --output-dir " + quote(out_));
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> files = output_files();
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"frame_a.png", "frame_b.png"}));
+  EXPECT_EQ(slurp(dir_ / "out" / "frame_b.png"), alone);
+}
+
+// --skip-existing renders only the missing images: an existing file is left untouched.
+TEST_F(Outputs, SkipExistingRendersOnlyMissingImages) {
+  const std::string a = write("a.xml", replaced(kTinyScene, "simple.png<", "frame_a.png<"));
+  const std::string b = write("b.xml", replaced(kTinyScene, "simple.png<", "frame_b.png<"));
+  std::filesystem::create_directories(dir_ / "out");
+  { std::ofstream(dir_ / "out" / "frame_a.png") << "kept"; }
+  Outcome r = run(quote(a) + " " + quote(b) +
+                  " --device cpu --quiet --skip-existing --output-dir " + quote(out_));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(dir_ / "out" / "frame_a.png"), "kept");
+  EXPECT_FALSE(slurp(dir_ / "out" / "frame_b.png").empty());
 }
 
 }  // namespace

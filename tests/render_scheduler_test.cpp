@@ -27,7 +27,8 @@ void ExpectCoversOnce(const std::vector<rt::RenderWork>& pass, int height, int a
 }
 
 // Records a pass as if each row-sample cost `per_row_sample` seconds.
-void RunPass(rt::RenderScheduler& s, const std::vector<rt::RenderWork>& pass, double per_row_sample) {
+void RunPass(rt::RenderScheduler& s, const std::vector<rt::RenderWork>& pass,
+             double per_row_sample) {
   for (const rt::RenderWork& w : pass) s.record(w, per_row_sample * w.rows() * w.samples());
 }
 
@@ -70,6 +71,28 @@ TEST(RenderScheduler, SlowImagesAreBandedOnTheAlignment) {
   for (const rt::RenderWork& w : pass) EXPECT_EQ(w.samples(), 1);
   // About the target per band: 0.15 s / 0.02 s = 7.5 rows, rounded to the alignment.
   EXPECT_EQ(pass[0].rows(), 8);
+}
+
+// A distributed render's tile: passes cover rows [32, 80) of 100 and nothing else, with
+// bands on the alignment from the tile's first row.
+TEST(RenderScheduler, TilePassesCoverOnlyTheTilesRows) {
+  const int align = 8, begin = 32, end = 80;
+  rt::RenderScheduler s(16, 100, 10, align, begin, end);
+  std::vector<rt::RenderWork> first = s.plan();
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0].row_begin, begin);
+  EXPECT_EQ(first[0].row_end, end);
+  RunPass(s, first, 0.05);  // Slow: the next pass is banded.
+  std::vector<rt::RenderWork> pass = s.plan();
+  EXPECT_GT(pass.size(), 1u);
+  int row = begin;
+  for (const rt::RenderWork& w : pass) {
+    EXPECT_EQ(w.row_begin, row);
+    EXPECT_EQ(w.row_begin % align, 0);
+    row = w.row_end;
+  }
+  EXPECT_EQ(row, end);
+  EXPECT_EQ(s.samples_done(), 1);
 }
 
 TEST(RenderScheduler, NothingLeftOnceEverySampleIsTaken) {
@@ -125,6 +148,24 @@ TEST(RenderScheduler, CancellationEndsSamplingAfterThePass) {
   EXPECT_GT(r.spp, 1);
   EXPECT_LT(r.spp, 1 << 20);
   for (const PixelAccum& a : r.accum) ASSERT_EQ(a.sum_sq.w, static_cast<float>(r.spp));
+}
+
+// sample_rows takes every sample of the tile's rows and leaves the other rows empty.
+TEST(RenderScheduler, SampleRowsFillsOnlyTheTile) {
+  rt::FlatScene flat;
+  flat.header.camera.width = 8;
+  flat.header.camera.height = 12;
+  flat.header.camera.samples = 7;
+  std::atomic<bool> never{false};
+  FakeDevice device(-1, &never);
+  device.load(flat);
+  rt::Progress quiet(false, "", 0);
+  EXPECT_EQ(rt::sample_rows(device, flat.header.camera, 4, 9, quiet), 7);
+  std::vector<PixelAccum> film;
+  device.read_accum(&film);
+  for (int y = 0; y < 12; ++y)
+    EXPECT_EQ(film[static_cast<size_t>(y) * 8].sum_sq.w, y >= 4 && y < 9 ? 7.0f : 0.0f)
+        << "row " << y;
 }
 
 }  // namespace

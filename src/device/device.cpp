@@ -76,7 +76,8 @@ RenderDevice* DevicePool::get(const DeviceOptions& options, std::string* why) {
   const std::string key = std::to_string(static_cast<int>(options.kind)) + "|" +
                           options.cl_selector + "|" + std::to_string(options.kernel_cache) +
                           std::to_string(options.generic_kernel) + "|" +
-                          std::to_string(options.threads);
+                          std::to_string(options.threads) + "|" +
+                          std::to_string(options.gpu_rank);
   auto it = devices_.find(key);
   if (it == devices_.end()) {
     Entry e;

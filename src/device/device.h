@@ -26,6 +26,7 @@ struct DeviceOptions {
   bool kernel_cache = true;     // OpenCL: read and write the compiled-kernel cache.
   bool generic_kernel = false;  // OpenCL: the all-features kernel, not one for the scene.
   int threads = 0;              // CPU: threads (0: all cores); the image does not depend on it.
+  int gpu_rank = 0;  // OpenCL, empty selector: the GPU to take among several (a node-local rank).
 };
 
 // A block of work: samples [sample_begin, sample_end) of every pixel of rows
@@ -62,8 +63,8 @@ class RenderDevice {
   // bit-identical to the others. Returns the rays cast, or 0 when the device does not count
   // them as it goes (they are in the film either way).
   virtual uint64_t render(const RenderWork& work) = 0;
-  // Bands of rows must hold a multiple of this many rows unless they end at the image's
-  // last row (the OpenCL kernel runs whole work-groups; valid after load()).
+  // Bands of rows must start at, and hold, a multiple of this many rows unless they end at
+  // the image's last row (the OpenCL kernel runs whole work-groups; valid after load()).
   virtual int row_alignment() const { return 1; }
   // Copies the film out: accumulators (every pass may need them) and first-hit facts.
   virtual void read_accum(std::vector<PixelAccum>* accum) = 0;

@@ -6,18 +6,21 @@
 
 namespace rt {
 
-RenderScheduler::RenderScheduler(int width, int height, int samples, int row_alignment)
+RenderScheduler::RenderScheduler(int width, int height, int samples, int row_alignment,
+                                 int row_begin, int row_end)
     : width_(width),
       height_(height),
       samples_(samples),
       align_(std::max(1, row_alignment)),
+      row_begin_(row_begin),
+      row_end_(row_end < 0 ? height : row_end),
       row_cost_(static_cast<size_t>(std::max(0, height)), 0.0) {}
 
 std::vector<RenderWork> RenderScheduler::plan() const {
   std::vector<RenderWork> pass;
-  if (done_ >= samples_ || width_ <= 0 || height_ <= 0) return pass;
+  if (done_ >= samples_ || width_ <= 0 || row_end_ <= row_begin_) return pass;
   double image_cost = 0;  // One sample of the whole image, estimated.
-  for (double c : row_cost_) image_cost += c;
+  for (int y = row_begin_; y < row_end_; ++y) image_cost += row_cost_[y];
   const bool banded = measured_ && image_cost > kSplitSeconds;
   int n = 1;
   if (measured_ && !banded) {
@@ -26,15 +29,15 @@ std::vector<RenderWork> RenderScheduler::plan() const {
         std::clamp<long>(want, 1, std::min<long>(4L * last_pass_samples_, 1L << 20)));
   }
   const int s1 = std::min(samples_, done_ + n);
-  for (int row = 0; row < height_;) {
-    int rows = height_ - row;
+  for (int row = row_begin_; row < row_end_;) {
+    int rows = row_end_ - row;
     if (banded) {
       // Rows until the estimate reaches the target, rounded to the device's alignment.
       double acc = 0;
       int k = 0;
-      while (row + k < height_ && acc < kTargetSeconds) acc += row_cost_[row + k++] * (s1 - done_);
+      while (row + k < row_end_ && acc < kTargetSeconds) acc += row_cost_[row + k++] * (s1 - done_);
       k = (k + align_ / 2) / align_ * align_;
-      rows = std::min(std::max(k, align_), height_ - row);
+      rows = std::min(std::max(k, align_), row_end_ - row);
     }
     pass.push_back({row, row + rows, done_, s1});
     row += rows;
@@ -53,27 +56,23 @@ void RenderScheduler::record(const RenderWork& work, double seconds) {
   const double per_row = seconds / (static_cast<double>(work.rows()) * work.samples());
   std::fill(row_cost_.begin() + work.row_begin, row_cost_.begin() + work.row_end, per_row);
   measured_ = true;
-  if (work.row_end == height_) {
+  if (work.row_end == row_end_) {
     done_ = work.sample_end;
     last_pass_samples_ = work.samples();
   }
 }
 
-RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress& progress,
-                           const StopRule& stop, const std::atomic<bool>* cancel,
-                           DeviceLoadInfo* load_info) {
+int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_end,
+                Progress& progress, const StopRule& stop, const std::atomic<bool>* cancel,
+                bool* cancelled) {
   using Clock = std::chrono::steady_clock;
-  const Camera& cam = flat.header.camera;
-  DeviceLoadInfo info = device.load(flat);
-  if (load_info) *load_info = info;
-  RenderScheduler scheduler(cam.width, cam.height, cam.samples, device.row_alignment());
-  RenderResult r;
-  r.width = cam.width;
-  r.height = cam.height;
+  RenderScheduler scheduler(cam.width, cam.height, cam.samples, device.row_alignment(), row_begin,
+                            row_end);
   const auto start = Clock::now();
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
+  std::vector<PixelAccum> accum;
   for (std::vector<RenderWork> pass = scheduler.plan(); !pass.empty(); pass = scheduler.plan()) {
     for (const RenderWork& w : pass) {
       const auto t0 = Clock::now();
@@ -82,7 +81,7 @@ RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress
       progress.add(static_cast<uint64_t>(w.rows()) * cam.width * w.samples(), rays);
     }
     if (cancel && cancel->load()) {
-      r.cancelled = scheduler.samples_done() < cam.samples;
+      if (cancelled) *cancelled = scheduler.samples_done() < cam.samples;
       break;
     }
     const std::vector<RenderWork> next = scheduler.plan();
@@ -91,14 +90,27 @@ RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress
         since(start) + scheduler.estimate_seconds(next) > stop.time_limit_s)
       break;
     if (stop.noise_target > 0 && scheduler.samples_done() >= 2) {
-      device.read_accum(&r.accum);
-      if (relative_noise(r.accum) < stop.noise_target) break;
+      device.read_accum(&accum);
+      if (relative_noise(accum) < stop.noise_target) break;
     }
   }
+  return scheduler.samples_done();
+}
+
+RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress& progress,
+                           const StopRule& stop, const std::atomic<bool>* cancel,
+                           DeviceLoadInfo* load_info) {
+  const Camera& cam = flat.header.camera;
+  DeviceLoadInfo info = device.load(flat);
+  if (load_info) *load_info = info;
+  RenderResult r;
+  r.width = cam.width;
+  r.height = cam.height;
+  const auto start = std::chrono::steady_clock::now();
+  r.spp = sample_rows(device, cam, 0, cam.height, progress, stop, cancel, &r.cancelled);
   device.read_accum(&r.accum);
   device.read_primary(&r.primary);
-  r.seconds = since(start);
-  r.spp = scheduler.samples_done();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.samples = static_cast<uint64_t>(r.accum.size()) * r.spp;
   for (const PixelAccum& a : r.accum) r.rays += a.rays;
   return r;

@@ -26,8 +26,12 @@ class RenderScheduler {
  public:
   static constexpr double kTargetSeconds = 0.15, kSplitSeconds = 0.5;
 
-  RenderScheduler(int width, int height, int samples, int row_alignment);
-  // The next pass: bands of rows covering the image once, each taking the pixels from
+  // Plans rows [row_begin, row_end) of an image `height` rows tall (row_end < 0: to the
+  // last row); a distributed render gives each rank such a tile. row_begin must be a
+  // multiple of row_alignment.
+  RenderScheduler(int width, int height, int samples, int row_alignment, int row_begin = 0,
+                  int row_end = -1);
+  // The next pass: bands of rows covering the tile once, each taking the pixels from
   // samples_done() to the same end; empty when every sample is taken.
   std::vector<RenderWork> plan() const;
   // The pass's expected duration from the costs measured so far.
@@ -37,7 +41,7 @@ class RenderScheduler {
   int samples_done() const { return done_; }
 
  private:
-  int width_, height_, samples_, align_;
+  int width_, height_, samples_, align_, row_begin_, row_end_;
   int done_ = 0;
   int last_pass_samples_ = 1;
   bool measured_ = false;
@@ -52,5 +56,12 @@ RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress
                            const StopRule& stop = StopRule(),
                            const std::atomic<bool>* cancel = nullptr,
                            DeviceLoadInfo* load_info = nullptr);
+
+// The pass loop of render_camera for rows [row_begin, row_end) of the camera `device` has
+// loaded (the film of those rows empty): takes every sample, or stops by `stop`/`cancel`.
+// Returns the samples per pixel taken; the film stays on the device.
+int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_end,
+                Progress& progress, const StopRule& stop = StopRule(),
+                const std::atomic<bool>* cancel = nullptr, bool* cancelled = nullptr);
 
 }  // namespace rt

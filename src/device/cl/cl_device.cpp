@@ -159,7 +159,7 @@ uint64_t ClDevice::render(const RenderWork& work) {
 
 std::unique_ptr<RenderDevice> create_cl_device(const DeviceOptions& options, std::string* why) {
   ClDeviceEntry entry;
-  if (!pick_cl_device(options.cl_selector, &entry, why)) return nullptr;
+  if (!pick_cl_device(options.cl_selector, &entry, why, options.gpu_rank)) return nullptr;
   try {
     return std::make_unique<ClDevice>(entry, options);
   } catch (const cl::Error& e) {

@@ -52,10 +52,13 @@ bool usable(const cl::Device& d) {
 
 // The entry `selector` names in `all`, or nullptr with *why set.
 const ClDeviceEntry* select(const std::vector<ClDeviceEntry>& all, const std::string& selector,
-                            std::string* why) {
+                            int gpu_rank, std::string* why) {
   if (selector.empty()) {
+    std::vector<const ClDeviceEntry*> gpus;
     for (const auto& e : all)
-      if ((e.device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) && usable(e.device)) return &e;
+      if ((e.device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) && usable(e.device))
+        gpus.push_back(&e);
+    if (!gpus.empty()) return gpus[static_cast<size_t>(std::max(0, gpu_rank)) % gpus.size()];
     for (const auto& e : all)
       if (usable(e.device)) return &e;
     return &all[0];  // Reported as unavailable by the caller.
@@ -78,7 +81,8 @@ const ClDeviceEntry* select(const std::vector<ClDeviceEntry>& all, const std::st
 
 }  // namespace
 
-bool pick_cl_device(const std::string& selector, ClDeviceEntry* pick, std::string* why) {
+bool pick_cl_device(const std::string& selector, ClDeviceEntry* pick, std::string* why,
+                    int gpu_rank) {
   try {
     std::vector<ClDeviceEntry> all;
     try {
@@ -91,7 +95,7 @@ bool pick_cl_device(const std::string& selector, ClDeviceEntry* pick, std::strin
       *why = "no OpenCL device found";
       return false;
     }
-    const ClDeviceEntry* e = select(all, selector, why);
+    const ClDeviceEntry* e = select(all, selector, gpu_rank, why);
     if (!e) return false;
     const std::string name = clean_cl_string(e->device.getInfo<CL_DEVICE_NAME>());
     if (!e->device.getInfo<CL_DEVICE_AVAILABLE>()) {

@@ -17,8 +17,11 @@ struct ClDeviceEntry {
 
 // Picks a usable device: `selector` is an index into the list list_cl_devices prints, or a
 // case-insensitive substring of a device name; empty picks the first GPU, else the first
-// device. Returns false and sets *why (one line) when there is none.
-bool pick_cl_device(const std::string& selector, ClDeviceEntry* pick, std::string* why);
+// device. With an empty selector and several GPUs, `gpu_rank` picks the GPU (modulo their
+// count): ranks of a distributed render on one node take one GPU each. Returns false and
+// sets *why (one line) when there is none.
+bool pick_cl_device(const std::string& selector, ClDeviceEntry* pick, std::string* why,
+                    int gpu_rank = 0);
 
 // Prints every platform and device with its index; false when there is none.
 bool list_cl_devices(std::FILE* out);

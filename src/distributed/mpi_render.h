@@ -1,0 +1,26 @@
+// The distributed driver: under mpirun, the raytracer spreads the tasks of a JobPlan over
+// the ranks. Rank 0 lists the images, hands out tasks one at a time to whichever rank asks
+// (dynamic scheduling: a rank that finishes early takes more), gathers the bands, writes each
+// image atomically once it is whole, and prints the job's one progress line; it renders tasks
+// too, on a thread of its own. Every rank renders on its own device: the node's GPU its local
+// rank picks, or the CPU reference with the node's cores shared among the node's ranks.
+//
+// Faults: a rank whose device fails or whose task throws reports the reason to rank 0, which
+// stops handing out work, prints one line naming the rank and the reason, and exits 1; the
+// images finished before it stay written and no partial image is. A rank killed outright ends
+// the job through mpirun (which names the rank and the signal). --skip-existing resumes.
+// This code is compiled only when CMake finds MPI.
+#pragma once
+
+#include "cli.h"
+
+namespace rt {
+
+// True when the process was started by mpirun/srun (the launcher's environment is set).
+bool launched_by_mpi();
+
+// Runs the job on every rank; returns the exit status (0, or 1 with the line printed by
+// rank 0).
+int render_distributed(const CliOptions& opt);
+
+}  // namespace rt
