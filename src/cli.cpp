@@ -34,6 +34,8 @@ Output:
                          per-pixel sample count, mean and variance of the unclamped
                          radiance, and the first sample's hit (OpenEXR; see
                          compare --help and src/moments.h for the channels)
+  --strict               treat every warning about the scene as an error (unknown
+                         elements, repeated ids, skipped degenerate triangles)
   --resolution-scale F   render width*F x height*F pixels (rounded, at least 1) of the
                          same view, e.g. for quick tests (default 1)
 
@@ -68,8 +70,7 @@ Geometry:
 )";
 
 [[noreturn]] void usage_error(const std::string& what) {
-  std::fprintf(stderr, "raytracer: %s\n(see raytracer --help)\n", what.c_str());
-  std::exit(2);
+  throw CliExit{2, "raytracer: " + what + "\n(see raytracer --help)\n"};
 }
 
 long parse_long(const char* opt, const char* value, long lo, long hi) {
@@ -92,6 +93,15 @@ double parse_positive(const char* opt, const char* value) {
 }  // namespace
 
 CliOptions parse_cli(int argc, char** argv) {
+  try {
+    return parse_arguments(argc, argv);
+  } catch (const CliExit& e) {
+    std::fputs(e.message.c_str(), e.status == 0 ? stdout : stderr);
+    std::exit(e.status);
+  }
+}
+
+CliOptions parse_arguments(int argc, char** argv) {
   CliOptions o;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -100,11 +110,9 @@ CliOptions parse_cli(int argc, char** argv) {
       return argv[++i];
     };
     if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
+      throw CliExit{0, kUsage};
     } else if (a == "--version") {
-      std::printf("raytracer %s\n", RT_VERSION);
-      std::exit(0);
+      throw CliExit{0, std::string("raytracer ") + RT_VERSION + "\n"};
     } else if (a == "--device") {
       std::string v = value();
       if (v == "auto") o.device = Device::kAuto;
@@ -132,6 +140,8 @@ CliOptions parse_cli(int argc, char** argv) {
       o.quiet = true;
     } else if (a == "--stats") {
       o.stats = true;
+    } else if (a == "--strict") {
+      o.load.strict = true;
     } else if (a == "--moments") {
       o.moments = true;
     } else if (a == "--resolution-scale") {

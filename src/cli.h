@@ -4,6 +4,7 @@
 #include <string>
 
 #include "flat_scene.h"
+#include "scene.h"
 
 namespace rt {
 
@@ -24,10 +25,21 @@ struct CliOptions {
   bool moments = false;           // Also write <image>.moments.exr beside each PNG.
   double resolution_scale = 1.0;  // Scales every camera's pixel count, same view.
   RenderOptions render;
+  LoadOptions load;  // --strict
 };
 
 // Parses argv; on --help / --version prints and exits 0; on a bad option prints one line
 // and the usage hint, and exits 2.
 CliOptions parse_cli(int argc, char** argv);
+
+// What parse_cli prints before it exits: the help or version (status 0, for stdout) or a
+// usage error (status 2, for stderr).
+struct CliExit {
+  int status;
+  std::string message;
+};
+
+// parse_cli without printing or exiting: throws CliExit instead (the fuzzer calls this).
+CliOptions parse_arguments(int argc, char** argv);
 
 }  // namespace rt

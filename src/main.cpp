@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "errors.h"
 #include "moments.h"
+#include "output_check.h"
 #include "png_io.h"
 #include "render.h"
 #include "render_cl.h"
@@ -23,7 +24,7 @@ double ms_since(std::chrono::steady_clock::time_point t) {
 int run(const rt::CliOptions& opt) {
   if (opt.list_devices) return rt::list_cl_devices(stdout) ? 0 : 1;
   auto t0 = std::chrono::steady_clock::now();
-  rt::SceneDesc scene = rt::load_scene(opt.scene);
+  rt::SceneDesc scene = rt::load_scene(opt.scene, opt.load);
   double load_ms = ms_since(t0);
   if (!opt.quiet)
     for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -31,13 +32,7 @@ int run(const rt::CliOptions& opt) {
     throw rt::input_error(opt.scene, "Cameras", "no camera " + std::to_string(opt.camera) +
                                                     " (the file has " +
                                                     std::to_string(scene.cameras.size()) + ")");
-  std::error_code ec;
-  if (!std::filesystem::exists(opt.output_dir, ec))
-    throw std::runtime_error(opt.output_dir + ": output directory does not exist");
-  if (!std::filesystem::is_directory(opt.output_dir, ec))
-    throw std::runtime_error(opt.output_dir + ": output path is not a directory");
-  if (access(opt.output_dir.c_str(), W_OK) != 0)
-    throw std::runtime_error(opt.output_dir + ": output directory is not writable");
+  rt::check_outputs(scene, opt.camera, opt.output_dir, opt.moments);
   if (opt.resolution_scale != 1.0)
     for (rt::CameraDesc& cam : scene.cameras) {
       // The near plane is untouched, so the view stays the same at a different pixel count.

@@ -3,7 +3,8 @@
 # sudo). Does nothing when every package is already installed.
 set -eu
 PACKAGES="cmake g++ make pkg-config libtinyxml2-dev libpng-dev zlib1g-dev ocl-icd-opencl-dev
-  opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo libgtest-dev libopenexr-dev"
+  opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo libgtest-dev libopenexr-dev
+  clang libclang-rt-14-dev"
 missing=""
 for p in $PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
