@@ -1,6 +1,6 @@
 #!/bin/sh
 # Runs one libFuzzer target of the sanitized tree (tools/sanitize_build.sh) from its seed corpus:
-# fuzz/seeds/TARGET, fuzz/regressions/TARGET, and for scene and ply every course file under
+# fuzz/seeds/TARGET, fuzz/regressions/TARGET (and the dictionary fuzz/TARGET.dict), and for scene and ply every course file under
 # ../shared/scenes of at most 64 KiB (the command line's seeds add each course scene's flags
 # from tests/course_scenes.txt). A crash leaves its input in BUILD_DIR/fuzz-artifacts/TARGET/;
 # after the fix, copy it into fuzz/regressions/TARGET/, where the unit tests replay it.
@@ -47,13 +47,16 @@ esac
 [ -n "$corpus" ] || corpus=$work/corpus
 mkdir -p "$corpus" "$dir/fuzz-artifacts/$target"
 runs=${RT_FUZZ_RUNS:--1}
+dict=""
+[ -f "$src/fuzz/$target.dict" ] && dict="-dict=$src/fuzz/$target.dict"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 echo "fuzz_$target: $(ls "$seeds" | wc -l) seeds, ${seconds} s, corpus $corpus"
 # -max_len bounds the inputs (the seeds are at most 64 KiB); -timeout flags any input that
 # takes 10 s as a hang; -rss_limit_mb any that needs 2 GiB.
 set +e
-"$fuzzer" -max_total_time="$seconds" -runs="$runs" -max_len=65536 -timeout=10 \
+# shellcheck disable=SC2086  # $dict is empty or one word
+"$fuzzer" $dict -max_total_time="$seconds" -runs="$runs" -max_len=65536 -timeout=10 \
   -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$dir/fuzz-artifacts/$target/" \
   "$corpus" "$seeds"
 status=$?
