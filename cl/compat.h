@@ -15,11 +15,18 @@
 // The CPU reference rounds every operation; contraction into FMA would make the two
 // devices disagree in the last bit, so it is off here too.
 #pragma OPENCL FP_CONTRACT OFF
+// OpenCL C has no way to report a failed check; the CPU reference's debug build does.
+#define RT_ASSERT(cond) ((void)0)
 
 #else  // C++17
 
+#include <cassert>
 #include <cmath>
 #include <cstdint>
+
+// Live in CPU debug builds (the tests' and developers' build), empty in release builds
+// (NDEBUG) and in the kernel, so a check costs nothing where speed matters.
+#define RT_ASSERT(cond) assert(cond)
 
 #define RT_DEVICE inline
 #define RT_GLOBAL

@@ -1,6 +1,6 @@
 // Every feature bit of the renderer, in one place. The host derives the set a scene
-// needs (src/features.cpp); the kernel is compiled with RT_KERNEL_FEATURES set to that
-// set, so code for an absent feature is removed by the compiler. The CPU reference reads
+// needs (scene_features in src/flat_scene.cpp); the kernel is compiled with RT_KERNEL_FEATURES set
+// to that set, so code for an absent feature is removed by the compiler. The CPU reference reads
 // the same bits at run time from the scene header. A bit that is on when the scene does
 // not need it never changes the image, only the speed.
 #ifndef RT_FEATURES_H
@@ -20,6 +20,16 @@
 #define RT_FEATURE_MOTION_BLUR (1 << 11)     // MotionBlur on any object.
 #define RT_FEATURE_MULTISAMPLE (1 << 12)     // More than one sample per pixel: jittered.
 #define RT_FEATURE_ALL ((1 << 13) - 1)
+
+// Light and material type tags are their feature bits, so the features a scene needs are
+// the OR of the types it uses, and a new type is one new bit here (with its code in
+// cl/light/ or cl/material/). Plain Blinn-Phong needs no feature.
+#define RT_LIGHT_POINT RT_FEATURE_POINT_LIGHTS
+#define RT_LIGHT_AREA RT_FEATURE_AREA_LIGHTS
+#define RT_MATERIAL_PLAIN 0
+#define RT_MATERIAL_MIRROR RT_FEATURE_MIRROR
+#define RT_MATERIAL_CONDUCTOR RT_FEATURE_CONDUCTOR
+#define RT_MATERIAL_DIELECTRIC RT_FEATURE_DIELECTRIC
 
 #ifdef __OPENCL_C_VERSION__
 #ifndef RT_KERNEL_FEATURES

@@ -3,7 +3,7 @@
 #ifndef RT_FILM_H
 #define RT_FILM_H
 
-#include "integrator.h"
+#include "integrator/integrator.h"
 
 // Per pixel: sum of weight * radiance (xyz) and of weights (w); sum of squared radiance
 // (xyz) and the sample count (w), from which compare/ forms per-pixel variances.

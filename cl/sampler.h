@@ -12,7 +12,7 @@
 #define RT_DIM_PIXEL 0
 #define RT_DIM_LENS 2
 #define RT_DIM_TIME 4
-// Later dimensions are keyed by the ray's place in the ray tree (see integrator.h).
+// Later dimensions are keyed by the ray's place in the ray tree (see RaySampler).
 #define RT_DIM_FIRST_FREE 5
 
 typedef struct SampleKey {
@@ -62,6 +62,34 @@ RT_DEVICE float Stratified1D(SampleKey k, uint dimension) {
   uint key = Hash4(k.pixel, dimension, k.seed, 0x2c1b3c6du);
   uint stratum = PermutationElement(k.sample, k.samples, key);
   return ((float)stratum + xi) / (float)k.samples;
+}
+
+// The random numbers of one ray of the ray tree: its pixel sample, its key in the tree
+// (cl/integrator/ray_tree.h), and whether it is a camera ray, whose first bounce draws
+// stratified samples.
+typedef struct RaySampler {
+  SampleKey sk;
+  uint key;
+  int primary;
+} RaySampler;
+
+RT_DEVICE RaySampler MakeRaySampler(SampleKey sk, uint key, int primary) {
+  RaySampler rs;
+  rs.sk = sk;
+  rs.key = key;
+  rs.primary = primary;
+  return rs;
+}
+
+// The ray's 2D sample number `offset` (one per light, lobe...): stratified on camera rays.
+RT_DEVICE float2 RaySample2D(RaySampler rs, uint offset) {
+  uint dim = HashCombine(rs.key, offset);
+  return rs.primary ? Stratified2D(rs.sk, dim) : Random2D(rs.sk, dim);
+}
+
+// The ray's 1D sample number `offset`, never stratified.
+RT_DEVICE float RaySample1D(RaySampler rs, uint offset) {
+  return Random1D(rs.sk, HashCombine(rs.key, offset));
 }
 
 #endif  // RT_SAMPLER_H

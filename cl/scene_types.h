@@ -1,16 +1,16 @@
 // The flattened scene as both devices read it. The host fills these arrays
-// (src/flatten.cpp) and uploads them unchanged; every struct is a multiple of 16 bytes
+// (src/flat_scene.cpp) and uploads them unchanged; every struct is a multiple of 16 bytes
 // with float3/float4 members first, so C++ and OpenCL C lay them out identically
-// (checked by static_asserts in src/flatten.cpp).
+// (checked by static_asserts in src/flat_scene.cpp and, on the device, by rt_sizes).
 #ifndef RT_SCENE_TYPES_H
 #define RT_SCENE_TYPES_H
 
 #include "compat.h"
+#include "data_arrays.h"
+#include "features.h"
 
-#define RT_MATERIAL_PLAIN 0
-#define RT_MATERIAL_MIRROR 1
-#define RT_MATERIAL_CONDUCTOR 2
-#define RT_MATERIAL_DIELECTRIC 3
+// A material's parameters as the file gives them; cl/material/material.h evaluates them
+// at a surface point into the Bsdf that shading reads. `type` is an RT_MATERIAL_* tag.
 
 typedef struct Material {
   float3 ambient;
@@ -26,22 +26,24 @@ typedef struct Material {
   int pad0, pad1, pad2;
 } Material;
 
-typedef struct PointLight {
-  float3 position;
-  float3 intensity;
-} PointLight;
-
-// A parallelogram corner + s * edge1 + t * edge2; the course's square lights are the
-// special case of two orthogonal edges of length Size centred on Position.
-typedef struct AreaLight {
-  float3 corner;
-  float3 edge1;
+// Every light of the scene in one array, tagged by `type` (an RT_LIGHT_* tag); each type
+// reads the members it documents and cl/light/ samples it. Point lights come first, then
+// area lights, so the direct light at a point is summed in the order it always was.
+typedef struct Light {
+  float3 position;  // Point: the light's position. Area: the parallelogram's corner.
+  float3 edge1;     // Area: the points are position + s * edge1 + t * edge2, s, t in [0, 1).
   float3 edge2;
-  float3 normal;
-  float3 radiance;
-  float area;
-  int pad0, pad1, pad2;
-} AreaLight;
+  float3 normal;                 // Area: unit normal (the light emits from both faces).
+  float3 emission;               // Point: intensity (power per unit solid angle). Area: radiance.
+  float area;                    // Area: |edge1 x edge2|.
+  float param0, param1, param2;  // Type-specific scalars (for example a spot's cone angles).
+  // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
+  // draw any, so adding a light of another type does not change another light's samples.
+  int sample_index;
+  int type;
+  int index;  // Type-specific index (for example a texture or an emitting instance).
+  int pad0;
+} Light;
 
 #define RT_LENS_SQUARE 0
 #define RT_LENS_DISK 1
@@ -112,8 +114,8 @@ typedef struct SceneHeader {
   float intersection_epsilon;
   int max_depth;
   int tlas_root;
-  int num_point_lights;
-  int num_area_lights;
+  int num_lights;
+  int pad0;
   int num_instances;
   int features;
   uint seed;
@@ -124,15 +126,11 @@ typedef struct SceneHeader {
 
 // The arrays of one scene, passed by pointer to every stage (compare Cycles'
 // KernelGlobals). In OpenCL it lives in private memory and points to global buffers.
+#define RT_SCENE_DATA_MEMBER(Type, name) RT_GLOBAL const Type* name;
 typedef struct SceneData {
   RT_GLOBAL const SceneHeader* header;
-  RT_GLOBAL const Material* materials;
-  RT_GLOBAL const Instance* instances;
-  RT_GLOBAL const BvhNode* nodes;
-  RT_GLOBAL const Triangle* triangles;
-  RT_GLOBAL const TriangleNormals* normals;
-  RT_GLOBAL const PointLight* point_lights;
-  RT_GLOBAL const AreaLight* area_lights;
+  RT_DATA_ARRAYS(RT_SCENE_DATA_MEMBER)
 } SceneData;
+#undef RT_SCENE_DATA_MEMBER
 
 #endif  // RT_SCENE_TYPES_H

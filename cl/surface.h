@@ -2,16 +2,23 @@
 #ifndef RT_SURFACE_H
 #define RT_SURFACE_H
 
+#include "bvh.h"
 #include "features.h"
 #include "ray.h"
+#include "scene_types.h"
 #include "transform.h"
 
+// The shading context of a hit (pbrt-v4's SurfaceInteraction): what lights, materials and
+// scattering read about the point. Texture coordinates and tangents belong here too.
 typedef struct SurfacePoint {
   float3 p;     // World-space position.
   float3 n;     // Unit shading normal (interpolated on smooth meshes).
   float3 ng;    // Unit geometric normal.
+  float3 wo;    // Unit direction back along the incoming ray.
   float scale;  // Largest coordinate magnitude p was computed from (see OffsetRayOrigin).
+  float time;   // The ray's shutter time; rays spawned here keep it.
   int material;
+  int front;  // 1 when wo is on the side ng points to.
 } SurfacePoint;
 
 // The position is rebuilt from the primitive (barycentrics on a triangle, a projection
@@ -70,7 +77,28 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     sp.p = sp.p + inst->motion * ray.time;
     sp.scale = sp.scale + MaxComponent(Abs3(inst->motion)) * ray.time;
   }
+  sp.wo = Normalize(-ray.direction);
+  sp.front = Dot(sp.wo, sp.ng) > 0.0f;
+  sp.time = ray.time;
   return sp;
+}
+
+// Turns the normals to the side wo is on: scattering (unlike direct light, see Li) treats
+// the surface as seen from where the ray came.
+RT_DEVICE void FaceForward(RT_PRIVATE SurfacePoint* s) {
+  if (!s->front) {
+    s->n = -s->n;
+    s->ng = -s->ng;
+  }
+}
+
+// A ray leaving s along dir, from just above the surface (or below it, for refraction),
+// at the same shutter time.
+RT_DEVICE Ray SpawnRay(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s, float3 dir,
+                       int below) {
+  float3 origin =
+      OffsetRayOrigin(s->p, below ? -s->ng : s->ng, sd->header->shadow_epsilon, s->scale);
+  return MakeRay(origin, dir, RT_INFINITY, s->time);
 }
 
 #endif  // RT_SURFACE_H

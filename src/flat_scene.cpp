@@ -11,7 +11,7 @@ namespace rt {
 // C++ and OpenCL C must agree on every byte of the shared structs.
 static_assert(sizeof(float3) == 16 && alignof(float3) == 16, "float3 must match OpenCL");
 static_assert(sizeof(Material) == 112, "Material layout");
-static_assert(sizeof(AreaLight) == 96, "AreaLight layout");
+static_assert(sizeof(Light) == 112, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
 static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
@@ -59,18 +59,45 @@ std::vector<Vec3d> vertex_normals(const MeshDesc& mesh) {
 
 bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
+// The tagged array, in the order the direct light is summed: point lights, area lights,
+// then the other types. Lights that draw random numbers are numbered in that order.
+std::vector<Light> tagged_lights(const SceneDesc& scene) {
+  std::vector<Light> out;
+  for (const PointLight& p : scene.point_lights) {
+    Light l{};
+    l.type = RT_LIGHT_POINT;
+    l.position = p.position;
+    l.emission = p.intensity;
+    out.push_back(l);
+  }
+  int sampled = 0;
+  for (const AreaLight& a : scene.area_lights) {
+    Light l{};
+    l.type = RT_LIGHT_AREA;
+    l.position = a.corner;
+    l.edge1 = a.edge1;
+    l.edge2 = a.edge2;
+    l.normal = a.normal;
+    l.emission = a.radiance;
+    l.area = a.area;
+    l.sample_index = sampled++;
+    out.push_back(l);
+  }
+  for (Light l : scene.lights) {
+    l.sample_index = sampled++;
+    out.push_back(l);
+  }
+  return out;
+}
+
 }  // namespace
 
 SceneData FlatScene::view() const {
   SceneData sd;
   sd.header = &header;
-  sd.materials = materials.data();
-  sd.instances = instances.data();
-  sd.nodes = nodes.data();
-  sd.triangles = triangles.data();
-  sd.normals = normals.data();
-  sd.point_lights = point_lights.data();
-  sd.area_lights = area_lights.data();
+#define RT_VIEW_ARRAY(Type, name) sd.name = name.data();
+  RT_DATA_ARRAYS(RT_VIEW_ARRAY)
+#undef RT_VIEW_ARRAY
   return sd;
 }
 
@@ -78,8 +105,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   FlatScene f;
   f.materials = scene.materials;
-  f.point_lights = scene.point_lights;
-  f.area_lights = scene.area_lights;
+  f.lights = tagged_lights(scene);
   // Bottom level: one BVH per mesh, whatever the number of its instances.
   std::vector<int> blas_root(scene.meshes.size(), -1);
   std::vector<Aabb> blas_box(scene.meshes.size());
@@ -150,21 +176,18 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   f.stats.nodes = f.nodes.size();
   f.stats.triangles = f.triangles.size();
   f.stats.instances = f.instances.size();
+  f.header.num_lights = static_cast<int>(f.lights.size());
   // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
-  if (f.nodes.empty()) f.nodes.emplace_back();
-  if (f.instances.empty()) f.instances.emplace_back();
-  if (f.triangles.empty()) f.triangles.emplace_back(), f.normals.emplace_back();
-  if (f.materials.empty()) f.materials.emplace_back();
-  if (f.point_lights.empty()) f.point_lights.emplace_back();
-  if (f.area_lights.empty()) f.area_lights.emplace_back();
+#define RT_PAD_ARRAY(Type, name) \
+  if (f.name.empty()) f.name.emplace_back();
+  RT_DATA_ARRAYS(RT_PAD_ARRAY)
+#undef RT_PAD_ARRAY
   SceneHeader& h = f.header;
   h.background = to_float3(scene.background);
   h.ambient_light = to_float3(scene.ambient);
   h.shadow_epsilon = options.use_scene_epsilon ? static_cast<float>(scene.shadow_epsilon) : 0.0f;
   h.intersection_epsilon = static_cast<float>(scene.intersection_epsilon);
   h.max_depth = scene.max_depth;
-  h.num_point_lights = static_cast<int>(scene.point_lights.size());
-  h.num_area_lights = static_cast<int>(scene.area_lights.size());
   h.num_instances = static_cast<int>(f.stats.instances);
   h.seed = options.seed;
   h.filter = options.filter;
@@ -217,13 +240,10 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
   for (size_t i = 0; i < used.size(); ++i) {
     if (!used[i]) continue;
     const Material& m = scene.materials[i];
-    if (m.type == RT_MATERIAL_MIRROR) f |= RT_FEATURE_MIRROR;
-    if (m.type == RT_MATERIAL_CONDUCTOR) f |= RT_FEATURE_CONDUCTOR;
-    if (m.type == RT_MATERIAL_DIELECTRIC) f |= RT_FEATURE_DIELECTRIC;
+    f |= m.type;  // Type tags are feature bits (cl/features.h).
     if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
   }
-  if (!scene.point_lights.empty()) f |= RT_FEATURE_POINT_LIGHTS;
-  if (!scene.area_lights.empty()) f |= RT_FEATURE_AREA_LIGHTS;
+  for (const Light& l : tagged_lights(scene)) f |= l.type;
   const CameraDesc& c = scene.cameras[camera];
   if (c.aperture > 0) f |= RT_FEATURE_DEPTH_OF_FIELD;
   if ((options.spp > 0 ? options.spp : c.samples) > 1) f |= RT_FEATURE_MULTISAMPLE;

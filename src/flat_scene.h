@@ -37,21 +37,17 @@ struct FlatStats {
   int tlas_depth = 0, max_blas_depth = 0;
 };
 
+#define RT_FLAT_SCENE_VECTOR(Type, name) std::vector<Type> name;
 struct FlatScene {
   SceneHeader header{};
-  std::vector<Material> materials;
-  std::vector<Instance> instances;
-  std::vector<BvhNode> nodes;
-  std::vector<Triangle> triangles;
-  std::vector<TriangleNormals> normals;
-  std::vector<PointLight> point_lights;
-  std::vector<AreaLight> area_lights;
+  RT_DATA_ARRAYS(RT_FLAT_SCENE_VECTOR)  // The device arrays of cl/data_arrays.h.
   FlatStats stats;
   bool fast_math = false;  // Host-side only: how the OpenCL program is built.
 
   // Pointers into the arrays above, for the CPU reference.
   SceneData view() const;
 };
+#undef RT_FLAT_SCENE_VECTOR
 
 // Builds the BVHs and arrays; the camera is set separately (geometry is shared by every
 // camera of a file).

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cl/features.h"
+#include "cl_scene_buffers.h"
 
 namespace rt {
 namespace {
@@ -29,38 +30,6 @@ using Clock = std::chrono::steady_clock;
 double ms_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
-
-// Appended to every program: reports the device's struct sizes so the host can verify
-// that both sides agree on the layouts before uploading anything.
-const char* const kLayoutKernel = R"RTCL(
-__kernel void rt_sizes(__global int* out) {
-  out[0] = (int)sizeof(SceneHeader);
-  out[1] = (int)sizeof(Material);
-  out[2] = (int)sizeof(Instance);
-  out[3] = (int)sizeof(BvhNode);
-  out[4] = (int)sizeof(Triangle);
-  out[5] = (int)sizeof(TriangleNormals);
-  out[6] = (int)sizeof(PointLight);
-  out[7] = (int)sizeof(AreaLight);
-  out[8] = (int)sizeof(PixelAccum);
-  out[9] = (int)sizeof(PrimaryInfo);
-  out[10] = (int)sizeof(Camera);
-}
-)RTCL";
-
-struct LayoutEntry {
-  const char* name;
-  size_t host_size;
-};
-const LayoutEntry kLayout[] = {
-    {"SceneHeader", sizeof(SceneHeader)}, {"Material", sizeof(Material)},
-    {"Instance", sizeof(Instance)},       {"BvhNode", sizeof(BvhNode)},
-    {"Triangle", sizeof(Triangle)},       {"TriangleNormals", sizeof(TriangleNormals)},
-    {"PointLight", sizeof(PointLight)},   {"AreaLight", sizeof(AreaLight)},
-    {"PixelAccum", sizeof(PixelAccum)},   {"PrimaryInfo", sizeof(PrimaryInfo)},
-    {"Camera", sizeof(Camera)},
-};
-constexpr int kLayoutCount = static_cast<int>(sizeof(kLayout) / sizeof(kLayout[0]));
 
 const char* cl_error_name(cl_int code) {
   switch (code) {
@@ -422,18 +391,7 @@ cl::Program ClRendererImpl::build_program(const std::string& source, const std::
 }
 
 void ClRendererImpl::check_layout(Built& b) {
-  cl::Kernel k(b.program, "rt_sizes");
-  cl::Buffer out(context_, CL_MEM_WRITE_ONLY, sizeof(cl_int) * kLayoutCount);
-  k.setArg(0, out);
-  queue_.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1), cl::NullRange);
-  std::vector<cl_int> sizes(kLayoutCount);
-  queue_.enqueueReadBuffer(out, CL_TRUE, 0, sizeof(cl_int) * kLayoutCount, sizes.data());
-  for (int i = 0; i < kLayoutCount; ++i)
-    if (static_cast<size_t>(sizes[i]) != kLayout[i].host_size)
-      throw std::runtime_error("OpenCL: struct " + std::string(kLayout[i].name) + " is " +
-                               std::to_string(sizes[i]) + " bytes on " + name_ + " but " +
-                               std::to_string(kLayout[i].host_size) +
-                               " bytes on the host (layout mismatch)");
+  check_scene_layout(context_, queue_, b.program, name_);
 }
 
 ClRendererImpl::Built& ClRendererImpl::program_for(const std::string& options, ClTimings* timings) {
@@ -446,7 +404,7 @@ ClRendererImpl::Built& ClRendererImpl::program_for(const std::string& options, C
   auto t0 = Clock::now();
   bool hit = false;
   Built b;
-  b.program = build_program(std::string(kKernelSource) + kLayoutKernel, options, &hit);
+  b.program = build_program(kKernelSource, options, &hit);
   try {
     b.kernel = cl::Kernel(b.program, "render");
     size_t max_wg = b.kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device_);
@@ -473,12 +431,6 @@ ClRendererImpl::Built& ClRendererImpl::program_for(const std::string& options, C
   return programs_.emplace(options, std::move(b)).first->second;
 }
 
-template <typename T>
-cl::Buffer upload(const cl::Context& ctx, const std::vector<T>& v) {
-  return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * v.size(),
-                    const_cast<T*>(v.data()));
-}
-
 size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
 
 RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progress& progress,
@@ -493,20 +445,12 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
   const size_t pixels = static_cast<size_t>(width) * height;
 
   // Memory check before allocating anything.
-  const uint64_t sizes[] = {
-      sizeof(SceneHeader),
-      sizeof(Material) * flat.materials.size(),
-      sizeof(Instance) * flat.instances.size(),
-      sizeof(BvhNode) * flat.nodes.size(),
-      sizeof(Triangle) * flat.triangles.size(),
-      sizeof(TriangleNormals) * flat.normals.size(),
-      sizeof(PointLight) * flat.point_lights.size(),
-      sizeof(AreaLight) * flat.area_lights.size(),
-      sizeof(PixelAccum) * pixels,
-      sizeof(PrimaryInfo) * pixels,
-  };
+  std::vector<std::pair<const char*, uint64_t>> sizes = scene_array_bytes(flat);
+  sizes.emplace_back("accum", sizeof(PixelAccum) * pixels);
+  sizes.emplace_back("primary", sizeof(PrimaryInfo) * pixels);
   uint64_t total = 0, largest = 0;
-  for (uint64_t s : sizes) {
+  for (const auto& buffer : sizes) {
+    const uint64_t s = buffer.second;
     total += s;
     largest = std::max(largest, s);
   }
@@ -529,15 +473,7 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
   Built& b = program_for(timings->options, timings);
 
   try {
-    cl::Buffer header(context_, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(SceneHeader),
-                      const_cast<SceneHeader*>(&flat.header));
-    cl::Buffer materials = upload(context_, flat.materials);
-    cl::Buffer instances = upload(context_, flat.instances);
-    cl::Buffer nodes = upload(context_, flat.nodes);
-    cl::Buffer triangles = upload(context_, flat.triangles);
-    cl::Buffer normals = upload(context_, flat.normals);
-    cl::Buffer point_lights = upload(context_, flat.point_lights);
-    cl::Buffer area_lights = upload(context_, flat.area_lights);
+    ClSceneBuffers scene = upload_scene(context_, flat);
     const size_t cells = std::max<size_t>(pixels, 1);  // OpenCL has no empty buffers.
     cl::Buffer accum(context_, CL_MEM_READ_WRITE, sizeof(PixelAccum) * cells);
     cl::Buffer primary(context_, CL_MEM_READ_WRITE, sizeof(PrimaryInfo) * cells);
@@ -545,23 +481,18 @@ RenderResult ClRendererImpl::render(const FlatScene& flat, bool generic, Progres
     queue_.enqueueFillBuffer(primary, cl_uint(0), 0, sizeof(PrimaryInfo) * cells);
 
     cl::Kernel& k = b.kernel;
-    k.setArg(0, header);
-    k.setArg(1, materials);
-    k.setArg(2, instances);
-    k.setArg(3, nodes);
-    k.setArg(4, triangles);
-    k.setArg(5, normals);
-    k.setArg(6, point_lights);
-    k.setArg(7, area_lights);
-    k.setArg(11, accum);
-    k.setArg(12, primary);
+    // The kernel's arguments: the scene, then (row_begin, sample_begin, sample_end) per
+    // launch, then the two per-pixel outputs.
+    const int launch_arg = bind_scene(k, scene, 0);
+    k.setArg(launch_arg + 3, accum);
+    k.setArg(launch_arg + 4, primary);
 
     const size_t lx = b.local_x, ly = b.local_y;
     const size_t gx = round_up(static_cast<size_t>(width), lx);
     auto launch = [&](int row_begin, int rows, int s0, int s1) {
-      k.setArg(8, row_begin);
-      k.setArg(9, s0);
-      k.setArg(10, s1);
+      k.setArg(launch_arg, row_begin);
+      k.setArg(launch_arg + 1, s0);
+      k.setArg(launch_arg + 2, s1);
       queue_.enqueueNDRangeKernel(k, cl::NullRange,
                                   cl::NDRange(gx, round_up(static_cast<size_t>(rows), ly)),
                                   cl::NDRange(lx, ly));

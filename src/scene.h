@@ -7,6 +7,24 @@
 #include "cl/scene_types.h"
 #include "mat4.h"
 
+// Lights as the file describes them (global, beside the device types they become);
+// flatten_scene turns them into the device's tagged Light array (cl/scene_types.h).
+struct PointLight {
+  float3 position;
+  float3 intensity;
+};
+
+// A parallelogram corner + s * edge1 + t * edge2; the course's square lights are the
+// special case of two orthogonal edges of length Size centred on Position.
+struct AreaLight {
+  float3 corner;
+  float3 edge1;
+  float3 edge2;
+  float3 normal;
+  float3 radiance;
+  float area = 0;
+};
+
 namespace rt {
 
 struct CameraDesc {
@@ -46,6 +64,9 @@ struct SceneDesc {
   int max_depth = 6;
   std::vector<PointLight> point_lights;
   std::vector<AreaLight> area_lights;
+  // Lights of the other types, already in device form (type, members as documented in
+  // cl/scene_types.h); flatten_scene places them after the point and area lights.
+  std::vector<Light> lights;
   std::vector<Material> materials;
   std::vector<MeshDesc> meshes;
   std::vector<ObjectDesc> objects;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cl/features.h"
+#include "cl_scene_buffers.h"
 #include "render.h"
 #include "render_cl.h"
 #include "scene.h"
@@ -154,37 +155,23 @@ TEST(OpenCl, StructLayoutsMatchTheDevice) {
   ASSERT_TRUE(found) << r->device_name();
   cl::Context ctx(device);
   cl::CommandQueue queue(ctx, device);
-  std::string src = std::string(rt::kKernelSource) + R"(
-__kernel void rt_test_sizes(__global int* out) {
-  out[0] = sizeof(SceneHeader); out[1] = sizeof(Material); out[2] = sizeof(Instance);
-  out[3] = sizeof(BvhNode); out[4] = sizeof(Triangle); out[5] = sizeof(TriangleNormals);
-  out[6] = sizeof(PointLight); out[7] = sizeof(AreaLight); out[8] = sizeof(PixelAccum);
-  out[9] = sizeof(PrimaryInfo); out[10] = sizeof(Camera); out[11] = sizeof(float3);
-})";
-  cl::Program program(ctx, src);
+  // The kernel's own rt_sizes, generated from cl/data_arrays.h, against the host's table
+  // generated from the same list, with every feature compiled out.
+  cl::Program program(ctx, std::string(rt::kKernelSource));
   try {
     program.build({device}, "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=0");
   } catch (const cl::Error&) {
     FAIL() << program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device);
   }
-  cl::Kernel k(program, "rt_test_sizes");
-  cl::Buffer out(ctx, CL_MEM_WRITE_ONLY, 12 * sizeof(cl_int));
+  std::vector<std::pair<const char*, uint64_t>> host = rt::scene_layout();
+  ASSERT_GE(host.size(), 11u);  // float3, header, camera, outputs and the six arrays.
+  cl::Kernel k(program, "rt_sizes");
+  cl::Buffer out(ctx, CL_MEM_WRITE_ONLY, host.size() * sizeof(cl_int));
   k.setArg(0, out);
   queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1), cl::NullRange);
-  std::vector<cl_int> s(12);
+  std::vector<cl_int> s(host.size());
   queue.enqueueReadBuffer(out, CL_TRUE, 0, s.size() * sizeof(cl_int), s.data());
-  EXPECT_EQ(s[0], (int)sizeof(SceneHeader)) << "SceneHeader";
-  EXPECT_EQ(s[1], (int)sizeof(Material)) << "Material";
-  EXPECT_EQ(s[2], (int)sizeof(Instance)) << "Instance";
-  EXPECT_EQ(s[3], (int)sizeof(BvhNode)) << "BvhNode";
-  EXPECT_EQ(s[4], (int)sizeof(Triangle)) << "Triangle";
-  EXPECT_EQ(s[5], (int)sizeof(TriangleNormals)) << "TriangleNormals";
-  EXPECT_EQ(s[6], (int)sizeof(PointLight)) << "PointLight";
-  EXPECT_EQ(s[7], (int)sizeof(AreaLight)) << "AreaLight";
-  EXPECT_EQ(s[8], (int)sizeof(PixelAccum)) << "PixelAccum";
-  EXPECT_EQ(s[9], (int)sizeof(PrimaryInfo)) << "PrimaryInfo";
-  EXPECT_EQ(s[10], (int)sizeof(Camera)) << "Camera";
-  EXPECT_EQ(s[11], (int)sizeof(float3)) << "float3";
+  for (size_t i = 0; i < host.size(); ++i) EXPECT_EQ(s[i], (int)host[i].second) << host[i].first;
 }
 
 TEST(OpenCl, DeviceNameIsNotEmpty) {

@@ -1,6 +1,7 @@
-// Tests for the shared shading code (cl/materials.h, Reflect in cl/util/math.h): Fresnel
-// reflectance of dielectrics and conductors, refraction, Beer-Lambert attenuation and the
-// Blinn-Phong model, against closed forms evaluated in double precision.
+// Tests for the shared shading code (cl/material/fresnel.h, cl/material/blinn_phong.h,
+// Reflect in cl/util/math.h): Fresnel reflectance of dielectrics and conductors,
+// refraction, Beer-Lambert attenuation and the Blinn-Phong model, against closed forms
+// evaluated in double precision.
 //
 // Tolerances: results whose operands are exactly representable and whose operations are
 // exact (dyadic values, multiplications by 1) are compared with ==; others allow a few float
@@ -14,7 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "cl/materials.h"
+#include "cl/material/blinn_phong.h"
+#include "cl/material/fresnel.h"
 
 namespace rt {
 namespace {

@@ -1,21 +1,9 @@
-// Reflection models: the course's Blinn-Phong, and Fresnel reflectance for dielectrics
-// and conductors.
-#ifndef RT_MATERIALS_H
-#define RT_MATERIALS_H
+// Fresnel reflectance of dielectrics and conductors, refraction, and absorption inside a
+// dielectric (Beer-Lambert).
+#ifndef RT_MATERIAL_FRESNEL_H
+#define RT_MATERIAL_FRESNEL_H
 
-#include "scene_types.h"
-#include "util/math.h"
-
-// Diffuse plus Blinn-Phong specular for irradiance `e` arriving from unit direction wi
-// at a point with unit normal n, seen from unit direction wo.
-RT_DEVICE float3 BlinnPhong(RT_GLOBAL const Material* m, float3 n, float3 wo, float3 wi, float3 e) {
-  float cos_i = Dot(n, wi);
-  if (cos_i <= 0.0f) return Vec3(0.0f);
-  float3 h = Normalize(wi + wo);
-  float cos_h = fmax(0.0f, Dot(n, h));
-  float spec = cos_h > 0.0f ? PowF(cos_h, m->phong_exponent) : 0.0f;
-  return (m->diffuse * cos_i + m->specular * spec) * e;
-}
+#include "../util/math.h"
 
 // Unpolarized Fresnel reflectance of a dielectric interface for light going from index
 // eta_i to eta_t; cos_i > 0 is the cosine on the incident side. Total internal
@@ -59,4 +47,4 @@ RT_DEVICE float3 BeerLambert(float3 absorption, float distance) {
   return Exp3(absorption * (-distance));
 }
 
-#endif  // RT_MATERIALS_H
+#endif  // RT_MATERIAL_FRESNEL_H

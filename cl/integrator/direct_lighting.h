@@ -1,0 +1,42 @@
+// Direct lighting at a surface point: ambient, plus one sample of every light, each
+// checked by a shadow ray and reflected through the material.
+#ifndef RT_INTEGRATOR_DIRECT_LIGHTING_H
+#define RT_INTEGRATOR_DIRECT_LIGHTING_H
+
+#include "../intersect.h"
+#include "../light/light.h"
+#include "../material/material.h"
+#include "../surface.h"
+
+// 1 when nothing lies between origin and origin + segment (exclusive).
+RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, float3 origin, float3 segment, float time,
+                         RT_PRIVATE uint* rays) {
+  *rays += 1u;
+  return !IntersectOccluded(sd, MakeRay(origin, segment, 1.0f, time));
+}
+
+// The light sample's contribution towards s->wo: none from below the shading normal or
+// when the shadow segment is blocked.
+RT_DEVICE float3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
+                                  RT_PRIVATE const Material* m, LightSample ls,
+                                  RT_PRIVATE uint* rays) {
+  if (!ls.valid || Dot(s->n, ls.wi) <= 0.0f) return Vec3(0.0f);
+  float3 origin = OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale);
+  if (!Unoccluded(sd, origin, ls.p_light - origin, s->time, rays)) return Vec3(0.0f);
+  return EvaluateBsdf(m, s->n, s->wo, ls.wi, ls.irradiance);
+}
+
+// Summed in the lights' array order (point lights, then area lights), which fixes the
+// last bit of the result. `rs` draws the area lights' samples.
+RT_DEVICE float3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
+                                RT_PRIVATE const Material* m, RaySampler rs,
+                                RT_PRIVATE uint* rays) {
+  RT_GLOBAL const SceneHeader* h = sd->header;
+  float3 l = m->ambient * h->ambient_light;
+  LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
+  for (int i = 0; i < h->num_lights; ++i)
+    l += ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);
+  return l;
+}
+
+#endif  // RT_INTEGRATOR_DIRECT_LIGHTING_H

@@ -1,0 +1,97 @@
+// The per-sample integrator: Whitted-style recursion (mirrors, conductors, dielectrics
+// with Fresnel and Beer's law) extended with the distribution effects of the course's
+// third assignment, over the explicit ray tree of ray_tree.h.
+#ifndef RT_INTEGRATOR_H
+#define RT_INTEGRATOR_H
+
+#include "../camera.h"
+#include "../intersect.h"
+#include "../material/material.h"
+#include "../surface.h"
+#include "direct_lighting.h"
+#include "ray_tree.h"
+
+// Deterministic facts about a pixel's first camera ray, for exact comparisons.
+typedef struct PrimaryInfo {
+  float t;
+  int instance;
+  int primitive;
+  float3 normal;
+} PrimaryInfo;
+
+RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 normal) {
+  info->t = hit.t;
+  info->instance = hit.instance;
+  info->primitive = hit.primitive;
+  info->normal = normal;
+}
+
+// Radiance along a camera ray; *rays counts every ray cast (camera, secondary, shadow).
+// Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
+// evaluate the material, add direct light, scatter.
+RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
+                    RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
+  RT_GLOBAL const SceneHeader* h = sd->header;
+  int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
+  RayStack stack;
+  stack.size = 0;
+  PushRay(&stack, MakeTask(camera_ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0));
+  float3 radiance = Vec3(0.0f);
+  Hit none;
+  none.t = RT_INFINITY;
+  none.instance = -1;
+  none.primitive = -1;
+  RecordPrimaryHit(info, none, Vec3(0.0f));
+  while (stack.size > 0) {
+    RayTask task = PopRay(&stack);
+    Hit hit;
+    *rays += 1u;
+    int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && task.depth == 0;
+    if (!IntersectClosest(sd, task.ray, cull, &hit)) {
+      if (task.depth == 0 || (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0)
+        radiance += task.weight * h->background;
+      continue;
+    }
+    SurfacePoint s = ComputeSurface(sd, task.ray, hit);
+    if (task.depth == 0) RecordPrimaryHit(info, hit, s.n);
+    if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && task.inside)
+      task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction));
+    Material m = EvaluateMaterial(sd, &s);
+    RaySampler rs = MakeRaySampler(sk, task.key, task.depth == 0);
+    // Opaque surfaces are shaded with the normal as modelled, also when seen from behind,
+    // as the course's renderer does: thin sheets such as grass blades are lit from either
+    // side. No light reaches the inner side of a dielectric directly.
+    if (!IsTransmissive(sd, &m) || s.front)
+      radiance += task.weight * DirectLighting(sd, &s, &m, rs, rays);
+    if (task.depth >= max_depth) continue;
+    FaceForward(&s);
+    Scatter(sd, &m, &s, &task, rs, &stack);
+  }
+  return radiance;
+}
+
+// Camera sample `sample` of pixel (x, y): its radiance, and its reconstruction-filter
+// weight in *weight.
+RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint sample,
+                              RT_PRIVATE float* weight, RT_PRIVATE PrimaryInfo* info,
+                              RT_PRIVATE uint* rays) {
+  RT_GLOBAL const SceneHeader* h = sd->header;
+  RT_GLOBAL const Camera* cam = &h->camera;
+  SampleKey sk = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples,
+                               (uint)cam->strata, h->seed);
+  float2 film = make_float2(0.5f, 0.5f);
+  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1) film = Stratified2D(sk, RT_DIM_PIXEL);
+  float2 lens = make_float2(0.5f, 0.5f);
+  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)) lens = Stratified2D(sk, RT_DIM_LENS);
+  float time = 0.0f;
+  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR)) time = Stratified1D(sk, RT_DIM_TIME);
+  *weight = 1.0f;
+  if (h->filter == RT_FILTER_GAUSSIAN) {
+    float dx = film.x - 0.5f, dy = film.y - 0.5f;
+    *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
+  }
+  Ray ray = GenerateCameraRay(sd, (float)x + film.x, (float)y + film.y, lens, time);
+  return Li(sd, sk, ray, info, rays);
+}
+
+#endif  // RT_INTEGRATOR_H

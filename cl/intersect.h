@@ -1,0 +1,21 @@
+// The scene's two ray queries, by name: the closest hit along a ray, and whether anything
+// blocks a shadow segment. The traversal behind both is cl/bvh.h.
+#ifndef RT_INTERSECT_H
+#define RT_INTERSECT_H
+
+#include "bvh.h"
+
+// The closest hit with t < ray.tmax into *hit; 0 when the ray escapes. `cull` skips
+// triangles facing away from the ray.
+RT_DEVICE int IntersectClosest(RT_PRIVATE const SceneData* sd, Ray ray, int cull,
+                               RT_PRIVATE Hit* hit) {
+  return IntersectScene(sd, ray, 0, cull, hit);
+}
+
+// 1 when anything lies on the ray with t < ray.tmax; stops at the first hit found.
+RT_DEVICE int IntersectOccluded(RT_PRIVATE const SceneData* sd, Ray ray) {
+  Hit hit;
+  return IntersectScene(sd, ray, 1, 0, &hit);
+}
+
+#endif  // RT_INTERSECT_H

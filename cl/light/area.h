@@ -1,0 +1,18 @@
+// A parallelogram of uniform radiance L, sampled uniformly by area: a point q at (s, t)
+// sends L * A * |cos_light| / d^2, an unbiased estimate of the irradiance from the whole
+// parallelogram. The course's square lights are two orthogonal edges of length Size.
+#ifndef RT_LIGHT_AREA_H
+#define RT_LIGHT_AREA_H
+
+#include "light_sample.h"
+
+RT_DEVICE LightSample SampleAreaLight(RT_GLOBAL const Light* light,
+                                      RT_PRIVATE const LightSampleContext* ctx, float2 u) {
+  float3 q = light->position + light->edge1 * u.x + light->edge2 * u.y;
+  LightSample ls = LightSampleTowards(ctx->p, q, light->emission * light->area);
+  // Both faces emit, as the course's reference images show (cornellbox_area's ceiling).
+  ls.irradiance = ls.irradiance * fabs(Dot(light->normal, ls.wi));
+  return ls;
+}
+
+#endif  // RT_LIGHT_AREA_H

@@ -1,0 +1,28 @@
+// Sampling any light of the scene's tagged array: one function per type (in this
+// folder), chosen here by the light's type. A type the kernel was compiled without is
+// never sampled (its code is compiled out; the host only omits features no light uses).
+#ifndef RT_LIGHT_H
+#define RT_LIGHT_H
+
+#include "../features.h"
+#include "../sampler.h"
+#include "area.h"
+#include "point.h"
+
+// The random dimension of a light's sample at a ray, offset from the ray's key (the
+// course's first bounce stratifies it; see RaySampler).
+RT_DEVICE uint LightSampleOffset(RT_GLOBAL const Light* light) {
+  return 0x1000u + (uint)light->sample_index;
+}
+
+RT_DEVICE LightSample SampleLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
+                                  RT_PRIVATE const LightSampleContext* ctx, RaySampler rs) {
+  if (RT_HAS(sd, RT_LIGHT_POINT) && light->type == RT_LIGHT_POINT)
+    return SamplePointLight(light, ctx);
+  if (RT_HAS(sd, RT_LIGHT_AREA) && light->type == RT_LIGHT_AREA)
+    return SampleAreaLight(light, ctx, RaySample2D(rs, LightSampleOffset(light)));
+  LightSample none = LightSampleTowards(ctx->p, ctx->p, Vec3(0.0f));  // Not valid.
+  return none;
+}
+
+#endif  // RT_LIGHT_H

@@ -1,0 +1,21 @@
+// The course's reflection model: Lambertian diffuse plus a Blinn-Phong specular lobe.
+#ifndef RT_MATERIAL_BLINN_PHONG_H
+#define RT_MATERIAL_BLINN_PHONG_H
+
+#include "../scene_types.h"
+#include "../util/math.h"
+
+// Diffuse plus Blinn-Phong specular for irradiance `e` arriving from unit direction wi
+// at a point with unit normal n, seen from unit direction wo. `m` is the material as
+// evaluated at the point (EvaluateMaterial).
+RT_DEVICE float3 BlinnPhong(RT_PRIVATE const Material* m, float3 n, float3 wo, float3 wi,
+                            float3 e) {
+  float cos_i = Dot(n, wi);
+  if (cos_i <= 0.0f) return Vec3(0.0f);
+  float3 h = Normalize(wi + wo);
+  float cos_h = fmax(0.0f, Dot(n, h));
+  float spec = cos_h > 0.0f ? PowF(cos_h, m->phong_exponent) : 0.0f;
+  return (m->diffuse * cos_i + m->specular * spec) * e;
+}
+
+#endif  // RT_MATERIAL_BLINN_PHONG_H

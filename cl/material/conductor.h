@@ -1,0 +1,20 @@
+// A metal: a mirror whose reflectance is scaled by the conductor Fresnel term of its
+// complex index RefractionIndex + i AbsorptionIndex.
+#ifndef RT_MATERIAL_CONDUCTOR_H
+#define RT_MATERIAL_CONDUCTOR_H
+
+#include "../integrator/ray_tree.h"
+#include "../surface.h"
+#include "fresnel.h"
+#include "glossy.h"
+
+RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
+                                RaySampler rs, RT_PRIVATE RayStack* stack) {
+  float fr = FrConductor(fmax(Dot(s->n, s->wo), 0.0f), m->refraction_index, m->absorption_index);
+  float3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
+  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * m->mirror * fr, task->medium,
+                           RT_CHILD_REFLECTED, 0));
+}
+
+#endif  // RT_MATERIAL_CONDUCTOR_H

@@ -1,0 +1,43 @@
+// Materials as one dispatch point. At a hit, EvaluateMaterial gathers the material's
+// parameters at the surface point (pbrt-v4's Material::GetBxDF); direct lighting reflects
+// light through them (EvaluateBsdf) and Scatter pushes the rays the material spawns, one
+// function per type in this folder (pbrt-v4's BxDF::Sample_f; Cycles' closure/bsdf.h).
+#ifndef RT_MATERIAL_H
+#define RT_MATERIAL_H
+
+#include "blinn_phong.h"
+#include "conductor.h"
+#include "dielectric.h"
+#include "mirror.h"
+
+// The parameters shading reads at this point, as a private copy: textures replace values
+// here (diffuse and specular from texels) and perturb s->n, and nothing downstream changes.
+RT_DEVICE Material EvaluateMaterial(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfacePoint* s) {
+  return sd->materials[s->material];
+}
+
+// Light of irradiance e arriving from wi, reflected towards wo.
+RT_DEVICE float3 EvaluateBsdf(RT_PRIVATE const Material* m, float3 n, float3 wo, float3 wi,
+                              float3 e) {
+  return BlinnPhong(m, n, wo, wi, e);
+}
+
+// 1 for materials light passes through: no light reaches their inner side directly.
+RT_DEVICE int IsTransmissive(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m) {
+  return RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC;
+}
+
+// Pushes the rays the material sends on from s (facing the incoming ray); plain
+// Blinn-Phong surfaces send none.
+RT_DEVICE void Scatter(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                       RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
+                       RaySampler rs, RT_PRIVATE RayStack* stack) {
+  if (RT_HAS(sd, RT_MATERIAL_MIRROR) && m->type == RT_MATERIAL_MIRROR)
+    ScatterMirror(sd, m, s, task, rs, stack);
+  else if (RT_HAS(sd, RT_MATERIAL_CONDUCTOR) && m->type == RT_MATERIAL_CONDUCTOR)
+    ScatterConductor(sd, m, s, task, rs, stack);
+  else if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
+    ScatterDielectric(sd, m, s, task, rs, stack);
+}
+
+#endif  // RT_MATERIAL_H

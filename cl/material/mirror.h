@@ -1,0 +1,17 @@
+// A perfect (or, with roughness, glossy) mirror of reflectance MirrorReflectance.
+#ifndef RT_MATERIAL_MIRROR_H
+#define RT_MATERIAL_MIRROR_H
+
+#include "../integrator/ray_tree.h"
+#include "../surface.h"
+#include "glossy.h"
+
+RT_DEVICE void ScatterMirror(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                             RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
+                             RaySampler rs, RT_PRIVATE RayStack* stack) {
+  float3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
+  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * m->mirror, task->medium,
+                           RT_CHILD_REFLECTED, 0));
+}
+
+#endif  // RT_MATERIAL_MIRROR_H

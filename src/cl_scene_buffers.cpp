@@ -1,0 +1,70 @@
+#include "cl_scene_buffers.h"
+
+#include <stdexcept>
+
+#include "render.h"
+
+namespace rt {
+namespace {
+
+template <typename T>
+cl::Buffer upload(const cl::Context& context, const T* data, size_t count) {
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * count,
+                    const_cast<T*>(data));
+}
+
+}  // namespace
+
+ClSceneBuffers upload_scene(const cl::Context& context, const FlatScene& flat) {
+  ClSceneBuffers b;
+  b.arrays.push_back(upload(context, &flat.header, 1));
+#define RT_UPLOAD_ARRAY(Type, name) \
+  b.arrays.push_back(upload(context, flat.name.data(), flat.name.size()));
+  RT_DATA_ARRAYS(RT_UPLOAD_ARRAY)
+#undef RT_UPLOAD_ARRAY
+  return b;
+}
+
+int bind_scene(cl::Kernel& kernel, const ClSceneBuffers& buffers, int first_arg) {
+  int arg = first_arg;
+  for (const cl::Buffer& buffer : buffers.arrays) kernel.setArg(arg++, buffer);
+  return arg;
+}
+
+std::vector<std::pair<const char*, uint64_t>> scene_array_bytes(const FlatScene& flat) {
+  std::vector<std::pair<const char*, uint64_t>> out = {{"header", sizeof(SceneHeader)}};
+#define RT_ARRAY_BYTES(Type, name) out.emplace_back(#name, sizeof(Type) * flat.name.size());
+  RT_DATA_ARRAYS(RT_ARRAY_BYTES)
+#undef RT_ARRAY_BYTES
+  return out;
+}
+
+std::vector<std::pair<const char*, uint64_t>> scene_layout() {
+  std::vector<std::pair<const char*, uint64_t>> out;
+#define RT_LAYOUT_OF_TYPE(Type) out.emplace_back(#Type, sizeof(Type));
+#define RT_LAYOUT_OF_ARRAY(Type, name) out.emplace_back(#Type, sizeof(Type));
+  RT_LAYOUT_TYPES(RT_LAYOUT_OF_TYPE)
+  RT_DATA_ARRAYS(RT_LAYOUT_OF_ARRAY)
+#undef RT_LAYOUT_OF_TYPE
+#undef RT_LAYOUT_OF_ARRAY
+  return out;
+}
+
+void check_scene_layout(const cl::Context& context, cl::CommandQueue& queue,
+                        const cl::Program& program, const std::string& device_name) {
+  const std::vector<std::pair<const char*, uint64_t>> host = scene_layout();
+  cl::Kernel k(program, "rt_sizes");
+  cl::Buffer out(context, CL_MEM_WRITE_ONLY, sizeof(cl_int) * host.size());
+  k.setArg(0, out);
+  queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1), cl::NullRange);
+  std::vector<cl_int> device(host.size());
+  queue.enqueueReadBuffer(out, CL_TRUE, 0, sizeof(cl_int) * device.size(), device.data());
+  for (size_t i = 0; i < host.size(); ++i)
+    if (static_cast<uint64_t>(device[i]) != host[i].second)
+      throw std::runtime_error("OpenCL: struct " + std::string(host[i].first) + " is " +
+                               std::to_string(device[i]) + " bytes on " + device_name + " but " +
+                               std::to_string(host[i].second) +
+                               " bytes on the host (layout mismatch)");
+}
+
+}  // namespace rt
