@@ -19,9 +19,10 @@
 
 #include "family.h"
 #include "flat_scene.h"
-#include "moments.h"
+#include "io/moments.h"
 #include "render.h"
-#include "render_cl.h"
+#include "device/device.h"
+#include "integrator/render_scheduler.h"
 #include "welch.h"
 
 namespace {
@@ -58,18 +59,20 @@ double RelativeMse(const std::vector<float>& img, const std::vector<float>& ref)
   return s / ref.size();
 }
 
-rt::RenderResult Render(const rt::SceneDesc& scene, const Config& c, int camera, rt::ClRenderer* cl,
-                        double* build_ms) {
+rt::RenderResult Render(const rt::SceneDesc& scene, const Config& c, int camera,
+                        rt::DevicePool& devices, double* build_ms) {
   rt::FlatScene flat = rt::flatten_scene(scene, c.opt);
   *build_ms = flat.stats.bvh_build_ms;
   rt::set_camera(flat, scene, camera, c.opt);
   rt::Progress quiet(false, "", 0);
-  if (c.device == "cl") {
-    // The renderer's time excludes the program build and its warm-up launch.
-    rt::ClTimings timings;
-    return cl->render(flat, c.generic, quiet, &timings);
-  }
-  return rt::render_cpu(flat, 0, quiet);
+  // The render's time excludes the program build and its warm-up launch.
+  rt::DeviceOptions options;
+  options.kind = c.device == "cl" ? rt::Device::kOpenCl : rt::Device::kCpu;
+  options.generic_kernel = c.generic;
+  std::string why;
+  rt::RenderDevice* device = devices.get(options, &why);
+  if (!device) throw std::runtime_error(why);
+  return rt::render_camera(*device, flat, quiet);
 }
 
 Args Parse(int argc, char** argv) {
@@ -150,8 +153,11 @@ int main(int argc, char** argv) {
       cam.height = std::max(1, static_cast<int>(std::lround(cam.height * a.scale)));
     }
     std::string why;
-    std::unique_ptr<rt::ClRenderer> cl = rt::ClRenderer::create("", true, &why);
-    if (!cl) std::fprintf(stderr, "note: no OpenCL device (%s); CPU rows only\n", why.c_str());
+    rt::DevicePool devices;
+    rt::DeviceOptions cl_options;
+    cl_options.kind = rt::Device::kOpenCl;
+    const bool has_cl = devices.get(cl_options, &why) != nullptr;
+    if (!has_cl) std::fprintf(stderr, "note: no OpenCL device (%s); CPU rows only\n", why.c_str());
     bool dielectric = false;
     for (const Material& m : scene.materials) dielectric |= m.type == RT_MATERIAL_DIELECTRIC;
 
@@ -159,7 +165,7 @@ int main(int argc, char** argv) {
     ref_config.opt.spp = a.ref_spp;
     ref_config.opt.seed = 1000;  // Independent of the candidates' seed 0.
     double ms;
-    rt::RenderResult ref = Render(scene, ref_config, a.camera, cl.get(), &ms);
+    rt::RenderResult ref = Render(scene, ref_config, a.camera, devices, &ms);
     std::vector<float> ref_rgb = ref.rgb();
     rt::MomentImage ref_m = rt::moments_from_render(ref, {1000, ref.spp, "box", "cpu", a.scene, 0});
     std::printf("%s, camera %d at %dx%d; reference: CPU, %d spp, %.1f s (seed 1000)\n\n",
@@ -168,10 +174,10 @@ int main(int argc, char** argv) {
         "| axis | setting | device | spp | BVH build ms | render s | rel. MSE | "
         "Welch (pooled) vs reference | non-finite |\n|---|---|---|---:|---:|---:|---:|---|---:|\n");
     std::vector<Row> rows;
-    for (const Config& c : Grid(cl != nullptr, dielectric)) {
+    for (const Config& c : Grid(has_cl, dielectric)) {
       Row row;
       row.config = c;
-      rt::RenderResult r = Render(scene, c, a.camera, cl.get(), &row.build_ms);
+      rt::RenderResult r = Render(scene, c, a.camera, devices, &row.build_ms);
       row.spp = r.spp;
       row.seconds = r.seconds;
       row.rel_mse = RelativeMse(r.rgb(), ref_rgb);

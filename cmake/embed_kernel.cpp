@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   if (!inline_file(argv[1], seen, source)) return 1;
   std::ofstream out(argv[2]);
   out << "// Generated from " << fs::path(argv[1]).filename().string()
-      << " by cmake/embed_kernel.cpp.\n#include \"render_cl.h\"\nnamespace rt {\n"
+      << " by cmake/embed_kernel.cpp.\n#include \"device/cl/cl_program.h\"\nnamespace rt {\n"
       << "const char* const kKernelSource = R\"RTCL(" << source << ")RTCL\";\n}\n";
   return out ? 0 : 1;
 }

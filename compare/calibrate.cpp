@@ -22,10 +22,11 @@
 
 #include "family.h"
 #include "flat_scene.h"
-#include "moments.h"
+#include "io/moments.h"
 #include "paired.h"
 #include "planted_bias.h"
-#include "render.h"
+#include "device/cpu_device.h"
+#include "integrator/render_scheduler.h"
 #include "welch.h"
 
 namespace {
@@ -93,7 +94,8 @@ struct Variant {
 rt::MomentImage render(Variant& v, uint32_t seed, int threads) {
   v.flat.header.seed = seed;
   rt::Progress quiet(false, "", 0);
-  rt::RenderResult r = rt::render_cpu(v.flat, threads, quiet);
+  rt::CpuDevice cpu(threads);
+  rt::RenderResult r = rt::render_camera(cpu, v.flat, quiet);
   rt::MomentInfo info;
   info.seed = seed;
   info.spp = v.flat.header.camera.samples;

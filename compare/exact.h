@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "moments.h"
+#include "io/moments.h"
 
 namespace cmp {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "family.h"
-#include "png_io.h"
+#include "io/png_io.h"
 
 namespace cmp {
 

@@ -11,7 +11,7 @@
 #pragma once
 
 #include "family.h"
-#include "moments.h"
+#include "io/moments.h"
 
 namespace cmp {
 

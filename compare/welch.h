@@ -5,8 +5,8 @@
 #pragma once
 
 #include "family.h"
-#include "moments.h"
-#include "png_io.h"
+#include "io/moments.h"
+#include "io/png_io.h"
 
 namespace cmp {
 

@@ -33,7 +33,7 @@ Output:
   --moments              also write <ImageName minus .png>.moments.exr beside each PNG:
                          per-pixel sample count, mean and variance of the unclamped
                          radiance, and the first sample's hit (OpenEXR; see
-                         compare --help and src/moments.h for the channels)
+                         compare --help and src/io/moments.h for the channels)
   --strict               treat every warning about the scene as an error (unknown
                          elements, repeated ids, skipped degenerate triangles)
   --resolution-scale F   render width*F x height*F pixels (rounded, at least 1) of the

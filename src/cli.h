@@ -3,12 +3,11 @@
 
 #include <string>
 
+#include "device/device.h"
 #include "flat_scene.h"
 #include "scene.h"
 
 namespace rt {
-
-enum class Device { kAuto, kCpu, kOpenCl };
 
 struct CliOptions {
   std::string scene;

@@ -2,7 +2,7 @@
 // difference. Used by the tests that check renders against the course's reference images.
 #pragma once
 
-#include "png_io.h"
+#include "io/png_io.h"
 
 namespace rt {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "errors.h"
-#include "moments.h"
+#include "io/moments.h"
 #include "xml_text.h"
 
 namespace rt {

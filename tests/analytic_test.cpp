@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "flat_scene.h"
-#include "render.h"
+#include "support/device_harness.h"
 
 namespace {
 
@@ -63,8 +63,7 @@ PixelStats RenderOnePixel(const rt::SceneDesc& scene, uint32_t seed = 0) {
   opt.seed = seed;
   rt::FlatScene flat = rt::flatten_scene(scene, opt);
   rt::set_camera(flat, scene, 0, opt);
-  rt::Progress quiet(false, "", 0);
-  rt::RenderResult r = rt::render_cpu(flat, 1, quiet);
+  rt::RenderResult r = rt::test::render_cpu(flat, 1);
   const PixelAccum& a = r.accum[0];
   double n = a.sum_sq.w, mean = a.sum.x / a.sum.w;
   double var = (a.sum_sq.x / n - mean * mean) * n / (n - 1);

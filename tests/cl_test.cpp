@@ -19,8 +19,9 @@
 
 #include "cl/features.h"
 #include "cl_scene_buffers.h"
-#include "render.h"
-#include "render_cl.h"
+#include "device/cl/cl_device.h"
+#include "device/cl/cl_program.h"
+#include "support/device_harness.h"
 #include "scene.h"
 
 namespace fs = std::filesystem;
@@ -29,20 +30,15 @@ namespace {
 
 const std::string kScenes = RT_SHARED_SCENES_DIR;
 
-// One renderer for the whole binary (building programs is the slow part); no disk cache
-// so each run exercises the compiler.
-rt::ClRenderer* shared_renderer(std::string* why) {
-  static std::string reason;
-  static std::unique_ptr<rt::ClRenderer> renderer = [] {
-    return rt::ClRenderer::create("", /*use_cache=*/false, &reason);
-  }();
-  *why = reason;
-  return renderer.get();
+// One device for the whole binary (building programs is the slow part); no disk cache so
+// each run exercises the compiler.
+rt::RenderDevice* shared_cl(std::string* why, bool generic = false) {
+  return rt::test::shared_device(rt::Device::kOpenCl, why, generic, /*kernel_cache=*/false);
 }
 
-#define REQUIRE_DEVICE(r)                     \
-  std::string why_;                           \
-  rt::ClRenderer* r = shared_renderer(&why_); \
+#define REQUIRE_DEVICE(r)                    \
+  std::string why_;                          \
+  rt::RenderDevice* r = shared_cl(&why_);    \
   if (!r) GTEST_SKIP() << "no OpenCL device: " << why_
 
 fs::path make_temp_dir(const std::string& tag) {
@@ -71,16 +67,22 @@ Loaded load(const std::string& rel, int spp, int size) {
   return l;
 }
 
-rt::RenderResult render_on_cpu(const rt::FlatScene& flat) {
-  rt::Progress quiet(false, "", 0);
-  return rt::render_cpu(flat, 0, quiet);
+rt::RenderResult render_on_cpu(const rt::FlatScene& flat) { return rt::test::render_cpu(flat); }
+
+// Renders on the shared device with the specialized or the generic kernel.
+rt::RenderResult render_on_cl(const rt::FlatScene& flat, bool generic,
+                              rt::DeviceLoadInfo* info = nullptr) {
+  std::string why;
+  rt::RenderDevice* device = shared_cl(&why, generic);
+  if (!device) throw std::runtime_error("no OpenCL device: " + why);
+  return rt::test::render_on(*device, flat, {}, info);
 }
 
-rt::RenderResult render_on_cl(rt::ClRenderer* r, const rt::FlatScene& flat, bool generic,
-                              rt::ClTimings* t = nullptr) {
-  rt::Progress quiet(false, "", 0);
-  rt::ClTimings local;
-  return r->render(flat, generic, quiet, t ? t : &local);
+// A new device with the disk cache on, as the executable opens it.
+std::unique_ptr<rt::RenderDevice> open_cl(const std::string& selector, std::string* why) {
+  rt::DeviceOptions options;
+  options.cl_selector = selector;
+  return rt::create_cl_device(options, why);
 }
 
 bool same_bits(const float4& a, const float4& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -146,13 +148,13 @@ TEST(OpenCl, StructLayoutsMatchTheDevice) {
     for (auto& d : devs) {
       std::string name = d.getInfo<CL_DEVICE_NAME>();
       while (!name.empty() && (name.back() == '\0' || name.back() == ' ')) name.pop_back();
-      if (!found && name == r->device_name()) {
+      if (!found && name == r->name()) {
         device = d;
         found = true;
       }
     }
   }
-  ASSERT_TRUE(found) << r->device_name();
+  ASSERT_TRUE(found) << r->name();
   cl::Context ctx(device);
   cl::CommandQueue queue(ctx, device);
   // The kernel's own rt_sizes, generated from cl/data_arrays.h, against the host's table
@@ -176,16 +178,16 @@ TEST(OpenCl, StructLayoutsMatchTheDevice) {
 
 TEST(OpenCl, DeviceNameIsNotEmpty) {
   REQUIRE_DEVICE(r);
-  EXPECT_FALSE(r->device_name().empty());
+  EXPECT_FALSE(r->name().empty());
 }
 
 TEST(OpenCl, BadSelectorsReturnNullWithAReason) {
   std::string why;
-  EXPECT_EQ(rt::ClRenderer::create("no-such-device-name-xyz", false, &why), nullptr);
+  EXPECT_EQ(open_cl("no-such-device-name-xyz", &why), nullptr);
   EXPECT_FALSE(why.empty());
   EXPECT_EQ(why.find('\n'), std::string::npos);
   why.clear();
-  EXPECT_EQ(rt::ClRenderer::create("999", false, &why), nullptr);
+  EXPECT_EQ(open_cl("999", &why), nullptr);
   EXPECT_FALSE(why.empty());
 }
 
@@ -194,13 +196,13 @@ TEST(OpenCl, BadSelectorsReturnNullWithAReason) {
 TEST(OpenCl, KernelBuildsSpecializedAndGeneric) {
   REQUIRE_DEVICE(r);
   Loaded l = load("/hw1/simple.xml", 1, 24);
-  rt::ClTimings t;
-  rt::RenderResult base = render_on_cl(r, l.flat, false, &t);
-  EXPECT_NE(t.options.find("-DRT_KERNEL_FEATURES=" + std::to_string(l.flat.header.features)),
+  rt::DeviceLoadInfo t;
+  rt::RenderResult base = render_on_cl(l.flat, false, &t);
+  EXPECT_NE(t.build_options.find("-DRT_KERNEL_FEATURES=" + std::to_string(l.flat.header.features)),
             std::string::npos)
-      << t.options;
-  EXPECT_EQ(t.options.find("fast-relaxed"), std::string::npos);
-  EXPECT_EQ(t.options.find("mad-enable"), std::string::npos);
+      << t.build_options;
+  EXPECT_EQ(t.build_options.find("fast-relaxed"), std::string::npos);
+  EXPECT_EQ(t.build_options.find("mad-enable"), std::string::npos);
   std::printf("[ specialized 0x%x ] compile %.0f ms\n", l.flat.header.features, t.compile_ms);
 
   for (int extra : {RT_FEATURE_MIRROR | RT_FEATURE_DIELECTRIC | RT_FEATURE_MULTISAMPLE,
@@ -208,42 +210,42 @@ TEST(OpenCl, KernelBuildsSpecializedAndGeneric) {
                         RT_FEATURE_DEPTH_OF_FIELD | RT_FEATURE_CONDUCTOR | RT_FEATURE_ROUGHNESS}) {
     rt::FlatScene f = l.flat;
     f.header.features |= extra;
-    rt::ClTimings te;
-    rt::RenderResult res = render_on_cl(r, f, false, &te);
+    rt::DeviceLoadInfo te;
+    rt::RenderResult res = render_on_cl(f, false, &te);
     std::printf("[ specialized 0x%x ] compile %.0f ms\n", f.header.features, te.compile_ms);
     EXPECT_TRUE(identical(res, base)) << "features 0x" << std::hex << f.header.features;
   }
-  rt::ClTimings tg;
-  rt::RenderResult generic = render_on_cl(r, l.flat, true, &tg);
+  rt::DeviceLoadInfo tg;
+  rt::RenderResult generic = render_on_cl(l.flat, true, &tg);
   std::printf("[ generic ] compile %.0f ms\n", tg.compile_ms);
-  EXPECT_NE(tg.options.find("-DRT_KERNEL_FEATURES=" + std::to_string(RT_FEATURE_ALL)),
+  EXPECT_NE(tg.build_options.find("-DRT_KERNEL_FEATURES=" + std::to_string(RT_FEATURE_ALL)),
             std::string::npos)
-      << tg.options;
+      << tg.build_options;
   EXPECT_TRUE(identical(generic, base));
   // The second use of a program comes from memory.
-  rt::ClTimings again;
-  render_on_cl(r, l.flat, true, &again);
+  rt::DeviceLoadInfo again;
+  render_on_cl(l.flat, true, &again);
   EXPECT_TRUE(again.cache_hit);
 }
 
 TEST(OpenCl, MatchesCpuOnSimple) {
   REQUIRE_DEVICE(r);
   Loaded l = load("/hw1/simple.xml", 0, 96);
-  expect_agree("hw1/simple", render_on_cl(r, l.flat, false), render_on_cpu(l.flat));
+  expect_agree("hw1/simple", render_on_cl(l.flat, false), render_on_cpu(l.flat));
 }
 
 TEST(OpenCl, MatchesCpuOnTransformedSpheres) {
   REQUIRE_DEVICE(r);
   Loaded l = load("/hw2/spheres.xml", 0, 96);
   ASSERT_TRUE(l.flat.header.features & RT_FEATURE_TRANSFORMS);
-  expect_agree("hw2/spheres", render_on_cl(r, l.flat, false), render_on_cpu(l.flat));
+  expect_agree("hw2/spheres", render_on_cl(l.flat, false), render_on_cpu(l.flat));
 }
 
 TEST(OpenCl, MatchesCpuOnAreaLightsWithSampling) {
   REQUIRE_DEVICE(r);
   Loaded l = load("/hw3/cornellbox_area.xml", 4, 64);
   ASSERT_TRUE(l.flat.header.features & RT_FEATURE_AREA_LIGHTS);
-  rt::RenderResult cl = render_on_cl(r, l.flat, false);
+  rt::RenderResult cl = render_on_cl(l.flat, false);
   EXPECT_EQ(cl.samples, 64u * 64u * 4u);
   expect_agree("hw3/cornellbox_area 4 spp", cl, render_on_cpu(l.flat));
 }
@@ -254,7 +256,7 @@ TEST(OpenCl, OddImageSize) {
   REQUIRE_DEVICE(r);
   Loaded l = load("/hw1/simple.xml", 0, 37);
   l.flat.header.camera.height = 13;
-  expect_agree("hw1/simple 37x13", render_on_cl(r, l.flat, false), render_on_cpu(l.flat));
+  expect_agree("hw1/simple 37x13", render_on_cl(l.flat, false), render_on_cpu(l.flat));
 }
 
 class ScopedEnv {
@@ -286,10 +288,10 @@ TEST(OpenCl, CompiledKernelCache) {
   std::string why;
   rt::RenderResult first, second;
   {
-    auto a = rt::ClRenderer::create("", true, &why);
+    auto a = open_cl("", &why);
     ASSERT_NE(a, nullptr) << why;
-    rt::ClTimings t;
-    first = render_on_cl(a.get(), l.flat, false, &t);
+    rt::DeviceLoadInfo t;
+    first = rt::test::render_on(*a, l.flat, {}, &t);
     EXPECT_FALSE(t.cache_hit);
     std::printf("[ cache ] cold compile %.0f ms\n", t.compile_ms);
   }
@@ -300,10 +302,10 @@ TEST(OpenCl, CompiledKernelCache) {
   }
   EXPECT_EQ(files, 1u);
   {
-    auto b = rt::ClRenderer::create("", true, &why);
+    auto b = open_cl("", &why);
     ASSERT_NE(b, nullptr) << why;
-    rt::ClTimings t;
-    second = render_on_cl(b.get(), l.flat, false, &t);
+    rt::DeviceLoadInfo t;
+    second = rt::test::render_on(*b, l.flat, {}, &t);
     EXPECT_TRUE(t.cache_hit);
     std::printf("[ cache ] cached load %.0f ms\n", t.compile_ms);
   }
@@ -312,10 +314,10 @@ TEST(OpenCl, CompiledKernelCache) {
   for (auto& e : fs::directory_iterator(dir / "raytracer" / "kernels"))
     std::ofstream(e.path(), std::ios::binary | std::ios::trunc) << "not a binary";
   {
-    auto c = rt::ClRenderer::create("", true, &why);
+    auto c = open_cl("", &why);
     ASSERT_NE(c, nullptr) << why;
-    rt::ClTimings t;
-    rt::RenderResult third = render_on_cl(c.get(), l.flat, false, &t);
+    rt::DeviceLoadInfo t;
+    rt::RenderResult third = rt::test::render_on(*c, l.flat, {}, &t);
     EXPECT_FALSE(t.cache_hit);
     EXPECT_TRUE(identical(first, third));
   }

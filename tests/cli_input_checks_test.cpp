@@ -5,11 +5,19 @@
 
 #include <algorithm>
 
-#include "cli_fixture.h"
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "support/cli_harness.h"
 
 namespace {
 
-using namespace rt_cli_test;
+namespace fs = std::filesystem;
+using namespace rt::test;
+const char* const kScene = kTinyScene;
 
 // Line number (1-based) of the n-th occurrence (0-based) of `what` in `text`.
 int line_of(const std::string& text, const std::string& what, int n = 0) {
@@ -27,7 +35,7 @@ std::string second_camera(const std::string& scene, const std::string& image) {
   return replaced(scene, "    </Cameras>", cam + "    </Cameras>");
 }
 
-using CliInputChecks = CliBadInput;
+using CliInputChecks = CliFixture;
 
 TEST_F(CliInputChecks, TwoCamerasWithOneImageNameRefusedBeforeRendering) {
   std::string scene = write("s.xml", second_camera(kScene, "simple.png"));

@@ -1,12 +1,29 @@
 // Runs the built raytracer on bad input and checks what a user sees: one error line on
 // stderr, the documented exit status (1 for bad input, 2 for bad usage), no PNG or
 // temporary file left behind, and no hang.
-#include "cli_fixture.h"
-#include "png_io.h"
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "io/png_io.h"
+#include "support/cli_harness.h"
 
 namespace {
 
-using namespace rt_cli_test;
+namespace fs = std::filesystem;
+
+using namespace rt::test;
+const char* const kScene = kTinyScene;
+
+class CliBadInput : public CliFixture {};
 
 TEST_F(CliBadInput, MalformedSceneOneLineNoPng) {
   std::string scene = write("bad.xml", replaced(kScene, "</ImageName>", ""));

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "moments.h"
+#include "io/moments.h"
 
 namespace fs = std::filesystem;
 

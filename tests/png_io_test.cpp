@@ -1,7 +1,7 @@
 // Tests for PNG I/O: exact float -> 8-bit conversion, exact round trips, atomic writes that
 // leave nothing behind on failure, every PNG color type on read, and corrupt input that must end
 // in std::runtime_error rather than a crash.
-#include "png_io.h"
+#include "io/png_io.h"
 
 #include <gtest/gtest.h>
 #include <png.h>

@@ -18,7 +18,7 @@
 
 #include "flat_scene.h"
 #include "image_metrics.h"
-#include "png_io.h"
+#include "io/png_io.h"
 #include "render.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "flat_scene.h"
-#include "render.h"
+#include "support/device_harness.h"
 
 namespace {
 
@@ -18,8 +18,7 @@ rt::RenderResult RenderExample(int threads, uint32_t seed) {
   opt.spp = 4;
   rt::FlatScene flat = rt::flatten_scene(scene, opt);
   rt::set_camera(flat, scene, 0, opt);
-  rt::Progress quiet(false, "", 0);
-  return rt::render_cpu(flat, threads, quiet);
+  return rt::test::render_cpu(flat, threads);
 }
 
 bool BitIdentical(const rt::RenderResult& a, const rt::RenderResult& b) {
@@ -56,8 +55,7 @@ rt::RenderResult RenderAreaWithStop(const rt::StopRule& stop, int spp) {
   opt.spp = spp;
   rt::FlatScene flat = rt::flatten_scene(scene, opt);
   rt::set_camera(flat, scene, 0, opt);
-  rt::Progress quiet(false, "", 0);
-  return rt::render_cpu(flat, 2, quiet, stop);
+  return rt::test::render_cpu(flat, 2, stop);
 }
 
 // Every pixel must hold the same number of samples: rules stop between passes only.

@@ -40,12 +40,11 @@
 
 #include "exact.h"
 #include "family.h"
-#include "moments.h"
+#include "io/moments.h"
+#include "io/png_io.h"
 #include "paired.h"
-#include "png_io.h"
-#include "render.h"
-#include "render_cl.h"
 #include "stability_scenes.h"
+#include "support/device_harness.h"
 #include "welch.h"
 
 namespace {
@@ -54,22 +53,14 @@ using namespace stab;
 
 // ----------------------------------------------------------------------------- devices
 
-enum class Dev { kCpu, kCl };
-const char* Name(Dev d) { return d == Dev::kCpu ? "cpu" : "cl"; }
-
-rt::ClRenderer* SharedCl(std::string* why) {
-  static std::string reason;
-  static std::unique_ptr<rt::ClRenderer> renderer =
-      rt::ClRenderer::create("", /*use_cache=*/true, &reason);
-  *why = reason;
-  return renderer.get();
-}
+using Dev = rt::Device;  // kCpu or kOpenCl, through the shared device harness.
+const char* Name(Dev d) { return rt::test::device_label(d); }
 
 // Runs the CL half of a test only where a device exists: the CPU half has already run.
 #define REQUIRE_CL()                                                           \
   do {                                                                         \
     std::string why_;                                                          \
-    if (!SharedCl(&why_))                                                      \
+    if (!rt::test::shared_device(Dev::kOpenCl, &why_))                         \
       GTEST_SKIP() << "CPU half passed or failed above; no OpenCL device for " \
                       "the CL half: "                                          \
                    << why_;                                                    \
@@ -91,18 +82,11 @@ void Dump(const std::string& label, const rt::RenderResult& r) {
 }
 
 rt::RenderResult RenderOn(Dev d, const rt::FlatScene& f, const std::string& label = "") {
-  rt::Progress quiet(false, "", 0);
-  rt::RenderResult r;
-  if (d == Dev::kCpu) {
-    r = rt::render_cpu(f, 2, quiet);
-    if (!label.empty()) Dump(label, r);
-  } else {
-    std::string why;
-    rt::ClRenderer* cl = SharedCl(&why);
-    if (!cl) throw std::runtime_error("no OpenCL device: " + why);
-    rt::ClTimings t;
-    r = cl->render(f, /*generic=*/false, quiet, &t);
-  }
+  std::string why;
+  rt::RenderDevice* device = rt::test::shared_device(d, &why);
+  if (!device) throw std::runtime_error("no OpenCL device: " + why);
+  rt::RenderResult r = rt::test::render_on(*device, f);
+  if (d == Dev::kCpu && !label.empty()) Dump(label, r);
   return r;
 }
 
@@ -261,7 +245,7 @@ void ExpectDevicesAgree(const Shots& cpu, const Shots& cl) {
   do {                             \
     Shots cpu_ = run(Dev::kCpu);   \
     REQUIRE_CL();                  \
-    Shots cl_ = run(Dev::kCl);     \
+    Shots cl_ = run(Dev::kOpenCl);     \
     ExpectDevicesAgree(cpu_, cl_); \
   } while (0)
 

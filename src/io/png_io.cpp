@@ -6,21 +6,19 @@
 // setjmp/longjmp well defined in C++, the function that calls setjmp holds nothing but pointers
 // set before the setjmp, and all the real work (with its locals) happens in a helper that has no
 // object with a destructor alive when libpng may jump out of it.
-#include "png_io.h"
+#include "io/png_io.h"
 
-#include <fcntl.h>
 #include <png.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
+
+#include "io/file_util.h"
 
 namespace rt {
 namespace {
@@ -31,8 +29,6 @@ constexpr uint64_t kMaxReadBytes = uint64_t{1} << 30;
 struct PngErrorContext {
   char message[256] = "unknown libpng error";
 };
-
-std::string errno_text(int err) { return std::generic_category().message(err); }
 
 [[noreturn]] void fail_write(const std::string& path, const std::string& reason) {
   throw std::runtime_error(path + ": cannot write PNG: " + reason);
@@ -104,37 +100,6 @@ bool encode_png(const Image8* image, std::vector<uint8_t>* out, PngErrorContext*
   encode_body(png, info, *image, out);
   png_destroy_write_struct(&png, &info);
   return true;
-}
-
-// Returns 0 or the errno of the failed write.
-int write_all(int fd, const uint8_t* data, size_t size) {
-  while (size > 0) {
-    const ssize_t n = ::write(fd, data, size);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return errno;
-    }
-    if (n == 0) return ENOSPC;  // No progress and no error: treat as a full device.
-    data += n;
-    size -= static_cast<size_t>(n);
-  }
-  return 0;
-}
-
-std::string temp_path_for(const std::string& path) {
-  static std::atomic<unsigned long> counter{0};
-  return path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-}
-
-// Best effort: makes the rename itself durable. Failure here does not undo a complete write.
-void sync_parent_directory(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  const std::string dir =
-      slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -257,21 +222,8 @@ void write_png(const std::string& path, const Image8& image) {
   PngErrorContext ctx;
   if (!encode_png(&image, &encoded, &ctx)) fail_write(path, ctx.message);
 
-  // Same directory as the target, so rename is atomic: readers see the old file or the new one.
-  const std::string temp = temp_path_for(path);
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail_write(path, errno_text(errno));
-
-  int err = write_all(fd, encoded.data(), encoded.size());
-  // fsync before rename: otherwise a crash can leave an empty file under the final name.
-  if (err == 0 && ::fsync(fd) != 0) err = errno;
-  if (::close(fd) != 0 && err == 0) err = errno;
-  if (err == 0 && std::rename(temp.c_str(), path.c_str()) != 0) err = errno;
-  if (err != 0) {
-    ::unlink(temp.c_str());
+  if (const int err = write_file_atomic(path, encoded.data(), encoded.size()))
     fail_write(path, errno_text(err));
-  }
-  sync_parent_directory(path);
 }
 
 Image8 read_png(const std::string& path) {

@@ -19,11 +19,10 @@ struct Image8 {
 // No gamma is applied. Throws std::invalid_argument if rgb.size() != width * height * 3.
 Image8 to_8bit(int width, int height, const std::vector<float>& rgb);
 
-// Writes a PNG atomically: encodes in memory, writes "<path>.tmp-<pid>-<counter>" in the same
-// directory, fsyncs it, then renames it over <path>. On any failure (directory missing or
-// unwritable, libpng error, disk full, inconsistent image) the temporary file is removed, no new
-// file appears at <path> (an existing one is left untouched), and std::runtime_error is thrown
-// with the one-line message "<path>: cannot write PNG: <reason>".
+// Writes a PNG atomically (encoded in memory, then write_file_atomic of io/file_util.h). On any
+// failure (directory missing or unwritable, libpng error, disk full, inconsistent image) no new
+// file appears at <path> (an existing one is left untouched), no temporary file remains, and
+// std::runtime_error is thrown with the one-line message "<path>: cannot write PNG: <reason>".
 void write_png(const std::string& path, const Image8& image);
 
 // Reads an 8- or 16-bit (or 1/2/4-bit) PNG of any color type and returns 8-bit RGB: gray is

@@ -1,20 +1,19 @@
-#include "moments.h"
+#include "io/moments.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIntAttribute.h>
-#include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
+
+#include "io/exr_file.h"
 
 namespace rt {
 namespace {
@@ -70,18 +69,12 @@ MomentImage moments_from_render(const RenderResult& r, const MomentInfo& info) {
   m.info = info;
   resize(m);
   for (size_t i = 0; i < m.pixels(); ++i) {
-    const PixelAccum& a = r.accum[i];
-    const double sum[3] = {a.sum.x, a.sum.y, a.sum.z};
-    const double sq[3] = {a.sum_sq.x, a.sum_sq.y, a.sum_sq.z};
-    double w = a.sum.w, n = a.sum_sq.w;
+    const PixelEstimate e = estimate_pixel(r.accum[i]);
     for (int c = 0; c < 3; ++c) {
-      double mean = w > 0 ? sum[c] / w : 0.0;
-      m.mean[i * 3 + c] = static_cast<float>(mean);
-      // Unbiased variance from the raw sums; rounding can push it slightly below zero.
-      double var = n > 1 ? (sq[c] - n * mean * mean) / (n - 1) : 0.0;
-      m.var[i * 3 + c] = static_cast<float>(std::max(0.0, var));
+      m.mean[i * 3 + c] = static_cast<float>(e.mean[c]);
+      m.var[i * 3 + c] = static_cast<float>(e.var[c]);
     }
-    m.count[i] = static_cast<uint32_t>(n);
+    m.count[i] = static_cast<uint32_t>(e.n);
     if (i < r.primary.size()) {
       const PrimaryInfo& p = r.primary[i];
       bool hit = p.instance >= 0;
@@ -103,8 +96,6 @@ std::string moments_path_for(const std::string& png_path) {
 }
 
 void write_moments(const std::string& path, const MomentImage& m) {
-  static std::atomic<unsigned> counter{0};
-  std::string tmp = path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
   try {
     if (m.width <= 0 || m.height <= 0 || m.mean.size() != m.pixels() * 3)
       throw std::runtime_error("inconsistent image");
@@ -129,15 +120,8 @@ void write_moments(const std::string& path, const MomentImage& m) {
     MomentImage copy = m;  // The frame buffer wants mutable storage.
     std::vector<uint32_t> inst(m.instance.begin(), m.instance.end());
     std::vector<uint32_t> prim(m.primitive.begin(), m.primitive.end());
-    {
-      Imf::OutputFile out(tmp.c_str(), h);
-      out.setFrameBuffer(frame_buffer(copy, inst, prim, h.dataWindow()));
-      out.writePixels(m.height);
-    }
-    std::filesystem::rename(tmp, path);
+    write_exr_atomic(path, h, frame_buffer(copy, inst, prim, h.dataWindow()), m.height);
   } catch (const std::exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
     throw std::runtime_error(path + ": cannot write moments: " + e.what());
   }
 }

@@ -1,0 +1,159 @@
+#include "device/cl/cl_program.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "cl_scene_buffers.h"
+#include "io/file_util.h"
+
+namespace rt {
+namespace {
+
+// FNV-1a, 64 bits; each part is prefixed with its length so concatenations differ.
+class Fnv1a {
+ public:
+  void add(const void* data, size_t n) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) {
+      h_ ^= p[i];
+      h_ *= 0x100000001b3ull;
+    }
+  }
+  void add(const std::string& s) {
+    uint64_t n = s.size();
+    add(&n, sizeof n);
+    add(s.data(), s.size());
+  }
+  uint64_t value() const { return h_; }
+
+ private:
+  uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+std::filesystem::path cache_dir() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg == '/') return std::filesystem::path(xdg) / "raytracer" / "kernels";
+  const char* home = std::getenv("HOME");
+  if (home && *home) return std::filesystem::path(home) / ".cache" / "raytracer" / "kernels";
+  return {};
+}
+
+}  // namespace
+
+ClProgramCache::ClProgramCache(const cl::Context& context, const cl::Device& device,
+                               bool use_disk_cache)
+    : context_(context), device_(device), queue_(context, device), use_disk_cache_(use_disk_cache) {
+  cl::Platform platform(device_.getInfo<CL_DEVICE_PLATFORM>());
+  platform_name_ = clean_cl_string(platform.getInfo<CL_PLATFORM_NAME>());
+  name_ = clean_cl_string(device_.getInfo<CL_DEVICE_NAME>());
+  device_version_ = clean_cl_string(device_.getInfo<CL_DEVICE_VERSION>());
+  driver_version_ = clean_cl_string(device_.getInfo<CL_DRIVER_VERSION>());
+  cl_device_fp_config fp = device_.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>();
+  correctly_rounded_ = (fp & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) != 0;
+}
+
+std::string ClProgramCache::options_for(int features, bool fast_math) const {
+  std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
+  if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
+  // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).
+  if (const char* extra = std::getenv("RT_CL_OPTIONS")) o += std::string(" ") + extra;
+  if (fast_math) o += " -cl-fast-relaxed-math";
+  return o;
+}
+
+cl::Program ClProgramCache::build(const std::string& source, const std::string& options,
+                                  bool* hit) {
+  *hit = false;
+  std::vector<cl::Device> devices{device_};
+  std::string file;
+  if (use_disk_cache_ && !cache_dir().empty()) {
+    Fnv1a h;
+    for (const std::string& part :
+         {source, options, platform_name_, name_, device_version_, driver_version_})
+      h.add(part);
+    char name[32];
+    std::snprintf(name, sizeof name, "%016" PRIx64 ".bin", h.value());
+    file = (cache_dir() / name).string();
+    std::vector<uint8_t> binary;
+    if (read_file(file, &binary) == 0 && !binary.empty()) {
+      try {
+        cl::Program::Binaries binaries{binary};
+        cl::Program p(context_, devices, binaries);
+        p.build(devices, options.c_str());
+        *hit = true;
+        return p;
+      } catch (const cl::Error&) {
+        // A stale or foreign binary: compile from source below and overwrite it.
+      }
+    }
+  }
+  cl::Program p(context_, source);
+  try {
+    p.build(devices, options.c_str());
+  } catch (const cl::Error& e) {
+    std::string log;
+    try {
+      log = p.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
+    } catch (const cl::Error&) {
+      log = "(no build log available)";
+    }
+    std::fprintf(stderr, "OpenCL build log for %s (options: %s):\n%s\n", name_.c_str(),
+                 options.c_str(), clean_cl_string(log).c_str());
+    std::fprintf(stderr, "OpenCL build error: %s\n", describe_cl_error(e).c_str());
+    throw std::runtime_error("OpenCL: kernel build failed on " + name_ + " (see the log above)");
+  }
+  if (!file.empty()) {
+    // The cache is an optimisation only: any failure to store the binary is ignored.
+    try {
+      std::vector<std::vector<unsigned char>> bins = p.getInfo<CL_PROGRAM_BINARIES>();
+      std::error_code ec;
+      std::filesystem::create_directories(cache_dir(), ec);
+      if (bins.size() == 1 && !bins[0].empty() && !ec)
+        write_file_atomic(file, bins[0].data(), bins[0].size());
+    } catch (const cl::Error&) {
+    }
+  }
+  return p;
+}
+
+ClProgram& ClProgramCache::get(const std::string& options, double* compile_ms, bool* cache_hit) {
+  auto it = programs_.find(options);
+  if (it != programs_.end()) {
+    *compile_ms = 0;
+    *cache_hit = true;  // Reused from memory.
+    return it->second;
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  ClProgram p;
+  p.program = build(kKernelSource, options, cache_hit);
+  try {
+    p.kernel = cl::Kernel(p.program, "render");
+    size_t max_wg = p.kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device_);
+    std::vector<size_t> max_items = device_.getInfo<CL_DEVICE_MAX_WORK_ITEM_SIZES>();
+    // 8x8 where the kernel allows it, else the largest power-of-two square-ish shape.
+    while (p.local_x * p.local_y > max_wg) {
+      if (p.local_y >= p.local_x && p.local_y > 1)
+        p.local_y /= 2;
+      else
+        p.local_x /= 2;
+    }
+    if (max_items.size() >= 2) {
+      p.local_x = std::max<size_t>(1, std::min(p.local_x, max_items[0]));
+      p.local_y = std::max<size_t>(1, std::min(p.local_y, max_items[1]));
+    }
+    // Host and device must agree on every struct before anything is uploaded.
+    check_scene_layout(context_, queue_, p.program, name_);
+  } catch (const cl::Error& e) {
+    throw std::runtime_error("OpenCL: " + describe_cl_error(e) + " on " + name_);
+  }
+  *compile_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return programs_.emplace(options, std::move(p)).first->second;
+}
+
+}  // namespace rt

@@ -1,0 +1,48 @@
+// Building the render program for one OpenCL device: build options, an on-disk cache of
+// compiled binaries, the check that host and device agree on every struct layout
+// (check_scene_layout of cl_scene_buffers.h), and the
+// work-group shape. Programs are kept in memory by build options, so cameras and renders
+// that need the same features build once.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "device/cl/opencl.h"
+
+namespace rt {
+
+struct ClProgram {
+  cl::Program program;
+  cl::Kernel kernel;  // `render` of cl/kernel.cl.
+  size_t local_x = 8, local_y = 8;
+  bool warmed = false;  // The first launch (and any lazy device compile) has happened.
+};
+
+class ClProgramCache {
+ public:
+  ClProgramCache(const cl::Context& context, const cl::Device& device, bool use_disk_cache);
+  // The build options for a feature set: the defines, exact division and square root when
+  // the device offers them, `fast_math`, and RT_CL_OPTIONS (a developer's knob).
+  std::string options_for(int features, bool fast_math) const;
+  // The program built with `options`. *compile_ms is the time it took (0 when it was in
+  // memory), *cache_hit whether it came from memory or the disk cache. Throws
+  // std::runtime_error (one line; the build log goes to stderr in full).
+  ClProgram& get(const std::string& options, double* compile_ms, bool* cache_hit);
+
+ private:
+  cl::Program build(const std::string& source, const std::string& options, bool* hit);
+
+  cl::Context context_;
+  cl::Device device_;
+  cl::CommandQueue queue_;
+  std::string platform_name_, name_, device_version_, driver_version_;
+  bool use_disk_cache_;
+  bool correctly_rounded_ = false;
+  std::map<std::string, ClProgram> programs_;
+};
+
+// The kernel source with every shared header inlined (generated at build time).
+extern const char* const kKernelSource;
+
+}  // namespace rt

@@ -1,0 +1,27 @@
+// The CPU reference: the kernel's code (cl/) compiled as C++, run on host threads.
+#pragma once
+
+#include "device/device.h"
+
+namespace rt {
+
+class CpuDevice final : public RenderDevice {
+ public:
+  // `threads` <= 0: all cores. The image does not depend on the count.
+  explicit CpuDevice(int threads);
+  std::string name() const override { return "cpu-reference"; }
+  void check_memory(const FlatScene& flat, uint64_t host_bytes) const override;
+  DeviceLoadInfo load(const FlatScene& flat) override;
+  uint64_t render(const RenderWork& work) override;
+  void read_accum(std::vector<PixelAccum>* accum) override { *accum = accum_; }
+  void read_primary(std::vector<PrimaryInfo>* primary) override { *primary = primary_; }
+
+ private:
+  int threads_;
+  const FlatScene* flat_ = nullptr;
+  SceneData view_{};
+  std::vector<PixelAccum> accum_;
+  std::vector<PrimaryInfo> primary_;
+};
+
+}  // namespace rt

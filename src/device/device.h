@@ -1,0 +1,109 @@
+// The renderer interface every device implements, and the one place a device is chosen.
+//
+// A device holds one scene and one film (per-pixel accumulators) at a time and does one
+// thing: add samples [s0, s1) of rows [r0, r1) to the film. Everything else (how passes are
+// sized, when to stop, progress, cancellation) belongs to the scheduler
+// (integrator/render_scheduler.h), so it is written once for every device, and a driver
+// that spreads rows or samples over several devices (or ranks) works through this interface.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cl/film.h"
+#include "flat_scene.h"
+
+namespace rt {
+
+enum class Device { kAuto, kCpu, kOpenCl };
+
+struct DeviceOptions {
+  Device kind = Device::kAuto;
+  std::string cl_selector;      // Index or name substring; empty: first GPU, else first device.
+  bool kernel_cache = true;     // OpenCL: read and write the compiled-kernel cache.
+  bool generic_kernel = false;  // OpenCL: the all-features kernel, not one for the scene.
+  int threads = 0;              // CPU: threads (0: all cores); the image does not depend on it.
+};
+
+// A block of work: samples [sample_begin, sample_end) of every pixel of rows
+// [row_begin, row_end).
+struct RenderWork {
+  int row_begin = 0, row_end = 0;
+  int sample_begin = 0, sample_end = 0;
+  int rows() const { return row_end - row_begin; }
+  int samples() const { return sample_end - sample_begin; }
+};
+
+// What loading a scene cost, for --stats.
+struct DeviceLoadInfo {
+  double compile_ms = 0;  // Building the program (or loading it from a cache); 0 on the CPU.
+  bool cache_hit = false;
+  std::string build_options;  // OpenCL build options (feature defines included).
+};
+
+class RenderDevice {
+ public:
+  virtual ~RenderDevice() = default;
+  // "cpu-reference", or the OpenCL device's name.
+  virtual std::string name() const = 0;
+  // Checks, before anything is allocated, that rendering `flat`'s camera fits: the device's
+  // buffers (scene arrays and film) in its memory, and `host_bytes` more (the caller's
+  // copies and outputs) in the host's. Throws std::runtime_error, one line naming the
+  // resolution, the bytes needed and the limit.
+  virtual void check_memory(const FlatScene& flat, uint64_t host_bytes) const = 0;
+  // Makes `flat` (with its camera) the scene of the following render() calls and clears the
+  // film. `flat` must outlive them. Throws std::runtime_error (one line) on failure.
+  virtual DeviceLoadInfo load(const FlatScene& flat) = 0;
+  // Adds samples [s0, s1) of rows [r0, r1) to the film; blocks until done. Each pixel's
+  // samples must be added in order (s0 == the samples it holds), which keeps every device
+  // bit-identical to the others. Returns the rays cast, or 0 when the device does not count
+  // them as it goes (they are in the film either way).
+  virtual uint64_t render(const RenderWork& work) = 0;
+  // Bands of rows must hold a multiple of this many rows unless they end at the image's
+  // last row (the OpenCL kernel runs whole work-groups; valid after load()).
+  virtual int row_alignment() const { return 1; }
+  // Copies the film out: accumulators (every pass may need them) and first-hit facts.
+  virtual void read_accum(std::vector<PixelAccum>* accum) = 0;
+  virtual void read_primary(std::vector<PrimaryInfo>* primary) = 0;
+};
+
+// Bytes of one pixel's film (accumulator and first-hit facts), on any device.
+constexpr uint64_t kFilmBytesPerPixel = sizeof(PixelAccum) + sizeof(PrimaryInfo);
+
+// Throws the memory error of check_memory when `bytes` exceed `limit`: "<W>x<H> pixels need
+// <bytes> of <what>, more than <limit_text>".
+void check_memory_limit(const FlatScene& flat, uint64_t bytes, uint64_t limit,
+                        const std::string& what, const std::string& limit_text);
+
+// The host memory a render may use: the kernel's estimate of available memory
+// (MemAvailable), bounded by the address-space and data-size limits (ulimit -v, -d).
+uint64_t available_host_memory();
+
+// "1.5 GiB (1610612736 bytes)".
+std::string format_bytes(uint64_t bytes);
+
+// Picks the device `options.kind` asks for: kCpu the reference, kOpenCl an OpenCL device or
+// a std::runtime_error naming why none is usable, kAuto OpenCL when usable, else the CPU
+// reference with *notice set to one line saying why (empty otherwise).
+std::unique_ptr<RenderDevice> create_device(const DeviceOptions& options, std::string* notice);
+
+// Devices kept open by their options, for programs that render on several (the tests, the
+// sweep): opening a device and building its programs is the slow part.
+class DevicePool {
+ public:
+  // The device for `options`, opened on first use; nullptr with *why (one line) when it
+  // cannot be (kAuto never falls back here: it is kOpenCl or kCpu as asked).
+  RenderDevice* get(const DeviceOptions& options, std::string* why);
+
+ private:
+  struct Entry {
+    std::unique_ptr<RenderDevice> device;
+    std::string why;
+  };
+  std::map<std::string, Entry> devices_;
+};
+
+}  // namespace rt

@@ -1,0 +1,107 @@
+#include "integrator/render_scheduler.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace rt {
+
+RenderScheduler::RenderScheduler(int width, int height, int samples, int row_alignment)
+    : width_(width),
+      height_(height),
+      samples_(samples),
+      align_(std::max(1, row_alignment)),
+      row_cost_(static_cast<size_t>(std::max(0, height)), 0.0) {}
+
+std::vector<RenderWork> RenderScheduler::plan() const {
+  std::vector<RenderWork> pass;
+  if (done_ >= samples_ || width_ <= 0 || height_ <= 0) return pass;
+  double image_cost = 0;  // One sample of the whole image, estimated.
+  for (double c : row_cost_) image_cost += c;
+  const bool banded = measured_ && image_cost > kSplitSeconds;
+  int n = 1;
+  if (measured_ && !banded) {
+    long want = std::lround(kTargetSeconds / std::max(image_cost, 1e-9));
+    n = static_cast<int>(
+        std::clamp<long>(want, 1, std::min<long>(4L * last_pass_samples_, 1L << 20)));
+  }
+  const int s1 = std::min(samples_, done_ + n);
+  for (int row = 0; row < height_;) {
+    int rows = height_ - row;
+    if (banded) {
+      // Rows until the estimate reaches the target, rounded to the device's alignment.
+      double acc = 0;
+      int k = 0;
+      while (row + k < height_ && acc < kTargetSeconds) acc += row_cost_[row + k++] * (s1 - done_);
+      k = (k + align_ / 2) / align_ * align_;
+      rows = std::min(std::max(k, align_), height_ - row);
+    }
+    pass.push_back({row, row + rows, done_, s1});
+    row += rows;
+  }
+  return pass;
+}
+
+double RenderScheduler::estimate_seconds(const std::vector<RenderWork>& pass) const {
+  double t = 0;
+  for (const RenderWork& w : pass)
+    for (int y = w.row_begin; y < w.row_end; ++y) t += row_cost_[y] * w.samples();
+  return t;
+}
+
+void RenderScheduler::record(const RenderWork& work, double seconds) {
+  const double per_row = seconds / (static_cast<double>(work.rows()) * work.samples());
+  std::fill(row_cost_.begin() + work.row_begin, row_cost_.begin() + work.row_end, per_row);
+  measured_ = true;
+  if (work.row_end == height_) {
+    done_ = work.sample_end;
+    last_pass_samples_ = work.samples();
+  }
+}
+
+RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress& progress,
+                           const StopRule& stop, const std::atomic<bool>* cancel,
+                           DeviceLoadInfo* load_info) {
+  using Clock = std::chrono::steady_clock;
+  const Camera& cam = flat.header.camera;
+  DeviceLoadInfo info = device.load(flat);
+  if (load_info) *load_info = info;
+  RenderScheduler scheduler(cam.width, cam.height, cam.samples, device.row_alignment());
+  RenderResult r;
+  r.width = cam.width;
+  r.height = cam.height;
+  const auto start = Clock::now();
+  auto since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  for (std::vector<RenderWork> pass = scheduler.plan(); !pass.empty(); pass = scheduler.plan()) {
+    for (const RenderWork& w : pass) {
+      const auto t0 = Clock::now();
+      const uint64_t rays = device.render(w);
+      scheduler.record(w, since(t0));
+      progress.add(static_cast<uint64_t>(w.rows()) * cam.width * w.samples(), rays);
+    }
+    if (cancel && cancel->load()) {
+      r.cancelled = scheduler.samples_done() < cam.samples;
+      break;
+    }
+    const std::vector<RenderWork> next = scheduler.plan();
+    if (next.empty()) break;
+    if (stop.time_limit_s > 0 &&
+        since(start) + scheduler.estimate_seconds(next) > stop.time_limit_s)
+      break;
+    if (stop.noise_target > 0 && scheduler.samples_done() >= 2) {
+      device.read_accum(&r.accum);
+      if (relative_noise(r.accum) < stop.noise_target) break;
+    }
+  }
+  device.read_accum(&r.accum);
+  device.read_primary(&r.primary);
+  r.seconds = since(start);
+  r.spp = scheduler.samples_done();
+  r.samples = static_cast<uint64_t>(r.accum.size()) * r.spp;
+  for (const PixelAccum& a : r.accum) r.rays += a.rays;
+  return r;
+}
+
+}  // namespace rt

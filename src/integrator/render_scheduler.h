@@ -1,0 +1,56 @@
+// The one scheduler of every render: it sizes the passes of samples from measured costs,
+// applies the stop rules (--time-limit, --noise-target) and cancellation between passes,
+// reports progress and gathers the run's figures, for any RenderDevice.
+//
+// Policy (one for every device): a pass covers the whole image once with the same samples,
+// so every pixel always holds the same sample count. The first pass is one sample of the
+// whole image; its time, then each band's, gives a cost per row and sample. When one sample
+// of the image is quick, passes take as many samples as fit in about kTargetSeconds
+// (growing at most fourfold from pass to pass); when it would take over kSplitSeconds, a
+// pass is one sample in bands of rows of about kTargetSeconds each, so each launch stays
+// short (progress, GPU watchdogs). Sampling stops after a pass when every sample is taken,
+// when cancellation is asked, when the next pass would end after the time limit, or when
+// the estimated relative noise is below the target.
+#pragma once
+
+#include <atomic>
+#include <vector>
+
+#include "device/device.h"
+#include "progress.h"
+#include "render.h"
+
+namespace rt {
+
+class RenderScheduler {
+ public:
+  static constexpr double kTargetSeconds = 0.15, kSplitSeconds = 0.5;
+
+  RenderScheduler(int width, int height, int samples, int row_alignment);
+  // The next pass: bands of rows covering the image once, each taking the pixels from
+  // samples_done() to the same end; empty when every sample is taken.
+  std::vector<RenderWork> plan() const;
+  // The pass's expected duration from the costs measured so far.
+  double estimate_seconds(const std::vector<RenderWork>& pass) const;
+  // Records a finished band and its duration; the pass is complete when its bands are.
+  void record(const RenderWork& work, double seconds);
+  int samples_done() const { return done_; }
+
+ private:
+  int width_, height_, samples_, align_;
+  int done_ = 0;
+  int last_pass_samples_ = 1;
+  bool measured_ = false;
+  std::vector<double> row_cost_;  // Seconds per sample of each row, as last measured.
+};
+
+// Renders the camera of `flat` on `device` under the policy above. `cancel`, when set,
+// stops sampling at the end of the current pass (RenderResult::cancelled). *load_info
+// receives what loading the scene cost. Throws std::runtime_error (one line) on a device
+// failure.
+RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress& progress,
+                           const StopRule& stop = StopRule(),
+                           const std::atomic<bool>* cancel = nullptr,
+                           DeviceLoadInfo* load_info = nullptr);
+
+}  // namespace rt

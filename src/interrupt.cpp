@@ -1,0 +1,51 @@
+#include "interrupt.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cstring>
+
+#include "io/file_util.h"
+
+namespace rt {
+namespace {
+
+std::atomic<bool> g_stop{false};
+bool g_quiet = false;  // Written before the handlers are installed, read only by them.
+static_assert(std::atomic<bool>::is_always_lock_free, "the flag is set from a signal handler");
+
+// Only async-signal-safe calls here: write, unlink (in remove_pending_temporaries), _exit.
+void abort_now(int signal_number) {
+  remove_pending_temporaries();
+  _exit(128 + signal_number);
+}
+
+void on_signal(int signal_number) {
+  if (signal_number == SIGINT && !g_stop.exchange(true)) {
+    if (g_quiet) return;
+    const char msg[] =
+        "\nraytracer: interrupt: finishing the current pass, then writing the images "
+        "(Ctrl-C again to abort)\n";
+    ssize_t ignored = ::write(STDERR_FILENO, msg, sizeof msg - 1);
+    (void)ignored;
+    return;
+  }
+  abort_now(signal_number);
+}
+
+}  // namespace
+
+void install_interrupt_handlers(bool quiet) {
+  g_quiet = quiet;
+  struct sigaction sa;
+  std::memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;  // Interrupted reads and writes resume; the flag is polled.
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+const std::atomic<bool>& stop_requested() { return g_stop; }
+
+}  // namespace rt

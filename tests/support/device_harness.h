@@ -1,0 +1,28 @@
+// The device harness of the tests: renders a flattened scene on a named device through the
+// same scheduler as the executable, so tests never branch between devices by hand.
+#pragma once
+
+#include <string>
+
+#include "device/device.h"
+#include "integrator/render_scheduler.h"
+
+namespace rt::test {
+
+// One device per (kind, generic kernel, disk cache) for the whole test binary, since
+// building programs is the slow part. Device::kCpu is always available; Device::kOpenCl
+// returns nullptr with *why set (one line) when no OpenCL device is usable.
+RenderDevice* shared_device(Device kind, std::string* why, bool generic_kernel = false,
+                            bool kernel_cache = true);
+
+// Renders on `device` with progress off.
+RenderResult render_on(RenderDevice& device, const FlatScene& flat, const StopRule& stop = {},
+                       DeviceLoadInfo* load_info = nullptr);
+
+// Renders on a fresh CPU reference of `threads` threads (0: all cores).
+RenderResult render_cpu(const FlatScene& flat, int threads = 0, const StopRule& stop = {});
+
+// "cpu" or "cl", for test names and messages.
+const char* device_label(Device kind);
+
+}  // namespace rt::test
