@@ -12,13 +12,17 @@
 #define RT_DATA_ARRAYS_H
 
 // RT_DATA_ARRAY(Type, name): one array `name` of `Type`, in kernel-argument order.
-#define RT_DATA_ARRAYS(RT_DATA_ARRAY)     \
-  RT_DATA_ARRAY(Material, materials)      \
-  RT_DATA_ARRAY(Instance, instances)      \
-  RT_DATA_ARRAY(BvhNode, nodes)           \
-  RT_DATA_ARRAY(Triangle, triangles)      \
-  RT_DATA_ARRAY(TriangleNormals, normals) \
-  RT_DATA_ARRAY(Light, lights)
+#define RT_DATA_ARRAYS(RT_DATA_ARRAY)                \
+  RT_DATA_ARRAY(Material, materials)                 \
+  RT_DATA_ARRAY(Instance, instances)                 \
+  RT_DATA_ARRAY(BvhNode, nodes)                      \
+  RT_DATA_ARRAY(Triangle, triangles)                 \
+  RT_DATA_ARRAY(TriangleNormals, normals)            \
+  RT_DATA_ARRAY(Light, lights)                       \
+  RT_DATA_ARRAY(TextureDesc, textures)               \
+  RT_DATA_ARRAY(uint, texels)                        \
+  RT_DATA_ARRAY(InstanceTextures, instance_textures) \
+  RT_DATA_ARRAY(TriangleUV, triangle_uvs)
 
 // Structs whose size both sides must agree on besides the arrays' element types: the
 // layout check (rt_sizes in cl/kernel.cl, scene_layout() on the host) covers all of them.

@@ -19,7 +19,8 @@
 #define RT_FEATURE_DEPTH_OF_FIELD (1 << 10)  // ApertureSize > 0.
 #define RT_FEATURE_MOTION_BLUR (1 << 11)     // MotionBlur on any object.
 #define RT_FEATURE_MULTISAMPLE (1 << 12)     // More than one sample per pixel: jittered.
-#define RT_FEATURE_ALL ((1 << 13) - 1)
+#define RT_FEATURE_TEXTURES (1 << 13)        // Textures: images, Perlin, checkerboard, bump/normal maps.
+#define RT_FEATURE_ALL ((1 << 14) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in

@@ -8,6 +8,7 @@
 #include "compat.h"
 #include "data_arrays.h"
 #include "features.h"
+#include "texture/texture_types.h"
 
 // A material's parameters as the file gives them; cl/material/material.h evaluates them
 // at a surface point into the Bsdf that shading reads. `type` is an RT_MATERIAL_* tag.
@@ -23,7 +24,8 @@ typedef struct Material {
   float absorption_index;  // Imaginary part of a conductor's index (AbsorptionIndex).
   float roughness;
   int type;
-  int pad0, pad1, pad2;
+  int unlit;  // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
+  int pad1, pad2;
 } Material;
 
 // Every light of the scene in one array, tagged by `type` (an RT_LIGHT_* tag); each type
@@ -115,7 +117,7 @@ typedef struct SceneHeader {
   int max_depth;
   int tlas_root;
   int num_lights;
-  int pad0;
+  int background_texture;  // Index of the replace_background texture, or -1.
   int num_instances;
   int features;
   uint seed;

@@ -19,6 +19,7 @@ typedef struct SurfacePoint {
   float time;   // The ray's shutter time; rays spawned here keep it.
   int material;
   int front;  // 1 when wo is on the side ng points to.
+  Hit hit;    // The hit it was built from: textures rebuild their frame from it.
 } SurfacePoint;
 
 // The position is rebuilt from the primitive (barycentrics on a triangle, a projection
@@ -80,6 +81,7 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
   sp.wo = Normalize(-ray.direction);
   sp.front = Dot(sp.wo, sp.ng) > 0.0f;
   sp.time = ray.time;
+  sp.hit = hit;
   return sp;
 }
 

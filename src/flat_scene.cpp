@@ -16,6 +16,9 @@ static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
 static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
 static_assert(sizeof(SceneHeader) == 192, "SceneHeader layout");
+static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
+static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
+static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
 
 namespace {
 
@@ -140,10 +143,22 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
         tn.n2 = to_float3(vn[t[2]]);
       }
       f.normals.push_back(tn);
+      TriangleUV uv{};
+      if (!mesh.uvs.empty()) {
+        auto at = [&](int k) {
+          return make_float2(static_cast<float>(mesh.uvs[t[k]][0]),
+                             static_cast<float>(mesh.uvs[t[k]][1]));
+        };
+        uv.uv0 = at(0);
+        uv.uv1 = at(1);
+        uv.uv2 = at(2);
+      }
+      f.triangle_uvs.push_back(uv);
     }
   }
   // Top level: one leaf per instance, boxes covering the whole shutter interval.
   std::vector<Instance> unordered;
+  std::vector<InstanceTextures> unordered_textures;
   std::vector<Aabb> boxes;
   Aabb unit;
   unit.grow(-1, -1, -1);
@@ -166,11 +181,19 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
                  (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
                  (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
+    InstanceTextures it;
+    for (int k = 0; k < RT_MAX_OBJECT_TEXTURES; ++k)
+      it.ids[k] = k < static_cast<int>(o.textures.size()) ? o.textures[k] : -1;
+    unordered_textures.push_back(it);
     boxes.push_back(transformed_box(sphere ? unit : blas_box[o.mesh], o.transform, o.motion));
   }
   std::vector<int> order;
   BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, f.nodes, order);
-  for (int i : order) f.instances.push_back(unordered[i]);
+  for (int i : order) {
+    f.instances.push_back(unordered[i]);
+    f.instance_textures.push_back(unordered_textures[i]);
+  }
+  flatten_textures(scene, f);
   f.header.tlas_root = top.root;
   f.stats.tlas_depth = top.depth;
   f.stats.nodes = f.nodes.size();
@@ -188,6 +211,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   h.shadow_epsilon = options.use_scene_epsilon ? static_cast<float>(scene.shadow_epsilon) : 0.0f;
   h.intersection_epsilon = static_cast<float>(scene.intersection_epsilon);
   h.max_depth = scene.max_depth;
+  h.background_texture = scene.background_texture;
   h.num_instances = static_cast<int>(f.stats.instances);
   h.seed = options.seed;
   h.filter = options.filter;
@@ -244,6 +268,9 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
     if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
   }
   for (const Light& l : tagged_lights(scene)) f |= l.type;
+  bool textured = scene.background_texture >= 0;
+  for (const ObjectDesc& o : scene.objects) textured = textured || !o.textures.empty();
+  if (textured) f |= RT_FEATURE_TEXTURES;
   const CameraDesc& c = scene.cameras[camera];
   if (c.aperture > 0) f |= RT_FEATURE_DEPTH_OF_FIELD;
   if ((options.spp > 0 ? options.spp : c.samples) > 1) f |= RT_FEATURE_MULTISAMPLE;

@@ -54,6 +54,10 @@ struct FlatScene {
 FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options);
 void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options);
 
+// Appends the scene's images to flat.texels and a descriptor per TextureMap to
+// flat.textures (src/flat_textures.cpp).
+void flatten_textures(const SceneDesc& scene, FlatScene& flat);
+
 // The feature bits the scene needs for `camera` (cl/features.h).
 int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options);
 

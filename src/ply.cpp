@@ -79,7 +79,7 @@ bool host_is_little_endian() {
 }
 
 // Roles of the properties the mesh needs; everything else is read and dropped.
-enum Role { kX, kY, kZ, kNx, kNy, kNz, kIndices, kSkip };
+enum Role { kX, kY, kZ, kNx, kNy, kNz, kIndices, kU, kV, kSkip };
 
 struct Property {
   std::string name;
@@ -192,6 +192,9 @@ class Parser {
         for (int r = 0; r < 6 && is_vertex; ++r) {
           if (p.name == kVertexNames[r]) p.role = static_cast<Role>(r);
         }
+        // Texture coordinates go by several names: u v, s t, texture_u texture_v.
+        if (is_vertex && (p.name == "u" || p.name == "s" || p.name == "texture_u")) p.role = kU;
+        if (is_vertex && (p.name == "v" || p.name == "t" || p.name == "texture_v")) p.role = kV;
         if (is_face && (p.name == "vertex_indices" || p.name == "vertex_index")) p.role = kIndices;
         if (p.role == kIndices && (!p.is_list || is_float(p.type))) {
           fail(p.name + " must be a list of integers");
@@ -204,6 +207,10 @@ class Parser {
       if ((found & 7) != 7) fail("missing x, y or z property");
       if ((found & 56) != 0 && (found & 56) != 56) fail("normals need all of nx, ny and nz");
       has_normals_ = (found & 56) != 0;
+      const int uv_bits = (1 << kU) | (1 << kV);
+      if ((found & uv_bits) != 0 && (found & uv_bits) != uv_bits)
+        fail("texture coordinates need both u and v (or s and t)");
+      has_uvs_ = (found & uv_bits) != 0;
     }
     if (!vertex) header_fail("no vertex element");
     vertex_count_ = vertex->count;
@@ -262,7 +269,7 @@ class Parser {
     if (vertex) mesh->positions.reserve(el.count);
     if (vertex && has_normals_) mesh->normals.reserve(el.count);
     if (el.name == "face") mesh->triangles.reserve(el.count);
-    double v[6] = {};
+    double v[kSkip] = {};
     std::vector<int> idx;
     for (item_ = 0; item_ < el.count; ++item_) {
       for (const Property& p : el.props) {
@@ -296,6 +303,7 @@ class Parser {
       if (!vertex) continue;
       mesh->positions.push_back({float(v[kX]), float(v[kY]), float(v[kZ])});
       if (has_normals_) mesh->normals.push_back({float(v[kNx]), float(v[kNy]), float(v[kNz])});
+      if (has_uvs_) mesh->uvs.push_back({float(v[kU]), float(v[kV])});
     }
   }
 
@@ -306,6 +314,7 @@ class Parser {
   bool swap_ = false;
   bool have_format_ = false;
   bool has_normals_ = false;
+  bool has_uvs_ = false;
   size_t vertex_count_ = 0;
   std::vector<Element> elements_;
   // What is being read, for error messages.

@@ -1,4 +1,5 @@
-// Minimal PLY mesh reader: positions, optional normals and triangulated faces.
+// Minimal PLY mesh reader: positions, optional normals and texture coordinates, and
+// triangulated faces.
 #pragma once
 
 #include <array>
@@ -10,6 +11,7 @@ namespace rt {
 struct PlyMesh {
   std::vector<std::array<float, 3>> positions;
   std::vector<std::array<float, 3>> normals;  // empty when the file has no nx/ny/nz
+  std::vector<std::array<float, 2>> uvs;      // empty when the file has no u/v (or s/t)
   std::vector<std::array<int, 3>> triangles;  // 0-based; quads and n-gons fan-triangulated
 };
 

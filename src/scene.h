@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cl/scene_types.h"
+#include "image/image.h"
 #include "mat4.h"
 
 // Lights as the file describes them (global, beside the device types they become);
@@ -42,6 +43,7 @@ struct MeshDesc {
   std::string element;  // For messages, e.g. "Mesh id=3".
   std::vector<Vec3d> positions;
   std::vector<std::array<int, 3>> triangles;
+  std::vector<std::array<double, 2>> uvs;  // Per position; empty without texture coordinates.
   bool smooth = false;
 };
 
@@ -53,6 +55,14 @@ struct ObjectDesc {
   int material = 0;
   Mat4 transform;  // Object to world; for spheres it includes centre and radius.
   Vec3d motion;    // World-space translation over the shutter.
+  std::vector<int> textures;  // Indices into SceneDesc::textures.
+};
+
+// One TextureMap; `desc` holds its device parameters except the image placement.
+struct TextureMapDesc {
+  std::string element;
+  TextureDesc desc{};
+  int image = -1;  // Index into SceneDesc::images (image textures).
 };
 
 struct SceneDesc {
@@ -70,6 +80,9 @@ struct SceneDesc {
   std::vector<Material> materials;
   std::vector<MeshDesc> meshes;
   std::vector<ObjectDesc> objects;
+  std::vector<ImageF> images;  // Decoded texture images (those a TextureMap uses).
+  std::vector<TextureMapDesc> textures;
+  int background_texture = -1;
   int degenerate_triangles = 0;  // Skipped at load time, reported by --stats.
   std::vector<std::string> warnings;
   std::vector<std::string> inputs;  // Every file read: the scene and its PLY files.

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "errors.h"
+#include "image/read_ldr.h"
 #include "ply.h"
 #include "scene.h"
 #include "scene_schema.h"
@@ -69,12 +70,20 @@ class Loader {
   void read_transformations(const XMLElement* scene);
   void read_vertices(const XMLElement* scene);
   void read_objects(const XMLElement* scene);
+  void read_textures(const XMLElement* scene);
+  TextureMapDesc read_texture_map(const XMLElement* e, const std::map<std::string, std::string>& images,
+                                  std::map<std::string, int>& loaded);
+  void read_texcoords(const XMLElement* scene);
+  std::vector<int> textures_of(const XMLElement* e) const;
+  void check_texture_coordinates() const;
   int material_of(const XMLElement* e) const;
   Mat4 transform_of(const XMLElement* e) const;
   Vec3d motion_of(const XMLElement* e) const;
   int vertex_index(const XMLElement* e, double one_based, long offset = 0) const;
-  int add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth);
-  void warn(const XMLElement* e, const std::string& what) { warn(file_ + ": " + path_of(e) + ": " + what); }
+  int add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth, bool uvs);
+  void warn(const XMLElement* e, const std::string& what) {
+    warn(file_ + ": " + path_of(e) + ": " + what);
+  }
   // With --strict, the first warning ends the load as an error.
   void warn(const std::string& line) {
     if (options_.strict) throw InputError(line + " [--strict: warnings are errors]");
@@ -88,6 +97,8 @@ class Loader {
   std::map<std::string, int> material_ids_;
   std::map<std::string, Mat4> transforms_;  // Keyed "t1", "s2", "r3", "c4".
   std::vector<Vec3d> vertices_;
+  std::vector<std::array<double, 2>> texcoords_;  // TexCoordData, one pair per vertex.
+  std::map<std::string, int> texture_ids_;        // TextureMap id -> index.
   std::map<std::string, int> mesh_objects_;      // Mesh id -> object index.
   std::map<std::string, int> instance_objects_;  // MeshInstance id -> object index.
 };
@@ -408,7 +419,8 @@ int Loader::vertex_index(const XMLElement* e, double one_based, long offset) con
 
 // Builds a mesh from inline indices into VertexData or from a PLY file. Degenerate
 // triangles (zero area) are dropped and counted.
-int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth) {
+int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth,
+                                bool uvs) {
   MeshDesc mesh;
   mesh.element = describe(obj);
   mesh.smooth = smooth;
@@ -425,6 +437,7 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
     }
     for (auto& v : pm.positions) mesh.positions.push_back({v[0], v[1], v[2]});
     mesh.triangles = pm.triangles;
+    for (auto& t : pm.uvs) mesh.uvs.push_back({t[0], t[1]});
   } else {
     auto idx = numbers(faces, 3, SIZE_MAX);
     if (idx.size() % 3 != 0)
@@ -434,14 +447,35 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
         faces->QueryIntAttribute("vertexOffset", &offset) != tinyxml2::XML_SUCCESS)
       fail(faces, "vertexOffset '" + shorten(faces->Attribute("vertexOffset")) +
                       "' is not a whole number");
+    // TexCoordData pairs with VertexData entry for entry; textureOffset shifts the
+    // texture-coordinate indices as vertexOffset shifts the vertex indices.
+    int tex_offset = 0;
+    if (faces->Attribute("textureOffset") &&
+        faces->QueryIntAttribute("textureOffset", &tex_offset) != tinyxml2::XML_SUCCESS)
+      fail(faces, "textureOffset '" + shorten(faces->Attribute("textureOffset")) +
+                      "' is not a whole number");
     // Only the vertices the mesh uses are copied, renumbered in order of first use.
-    std::map<int, int> remap;
+    std::map<std::pair<int, int>, int> remap;
     for (size_t i = 0; i < idx.size(); i += 3) {
       std::array<int, 3> tri;
       for (int k = 0; k < 3; ++k) {
         int g = vertex_index(faces, idx[i + k], offset);
-        auto [it, inserted] = remap.emplace(g, static_cast<int>(mesh.positions.size()));
-        if (inserted) mesh.positions.push_back(vertices_[g]);
+        int t = -1;
+        if (uvs) {
+          double tg = idx[i + k] + static_cast<double>(tex_offset);
+          if (!(tg >= 1 && tg <= static_cast<double>(texcoords_.size())))
+            fail(faces, "texture coordinate index " + fmt(idx[i + k]) +
+                            (tex_offset ? " + textureOffset " + std::to_string(tex_offset) : "") +
+                            " out of range [1, " + std::to_string(texcoords_.size()) +
+                            "] of TexCoordData");
+          t = static_cast<int>(tg) - 1;
+        }
+        auto [it, inserted] =
+            remap.emplace(std::make_pair(g, t), static_cast<int>(mesh.positions.size()));
+        if (inserted) {
+          mesh.positions.push_back(vertices_[g]);
+          if (uvs) mesh.uvs.push_back(texcoords_[t]);
+        }
         tri[k] = it->second;
       }
       mesh.triangles.push_back(tri);
@@ -472,7 +506,9 @@ void Loader::read_objects(const XMLElement* scene) {
       o.material = material_of(e);
       const char* mode = e->Attribute("shadingMode");
       bool smooth = mode && std::string(mode) == "smooth";
-      o.mesh = add_mesh_from_faces(e, child(e, name == "Mesh" ? "Faces" : "Indices", true), smooth);
+      o.textures = textures_of(e);
+      o.mesh = add_mesh_from_faces(e, child(e, name == "Mesh" ? "Faces" : "Indices", true), smooth,
+                                   !o.textures.empty() && !texcoords_.empty());
       o.transform = transform_of(e);
       o.motion = motion_of(e);
       if (name == "Mesh") mesh_objects_[key] = static_cast<int>(scene_.objects.size());
@@ -490,6 +526,7 @@ void Loader::read_objects(const XMLElement* scene) {
       const ObjectDesc& base = scene_.objects[it->second];
       o.mesh = base.mesh;
       o.material = child(e, "Material", false) ? material_of(e) : base.material;
+      o.textures = child(e, "Textures", false) ? textures_of(e) : base.textures;
       bool reset = false;
       if (e->Attribute("resetTransform") &&
           e->QueryBoolAttribute("resetTransform", &reset) != tinyxml2::XML_SUCCESS)
@@ -501,6 +538,7 @@ void Loader::read_objects(const XMLElement* scene) {
     } else if (name == "Sphere") {
       o.kind = ObjectDesc::kSphere;
       o.material = material_of(e);
+      o.textures = textures_of(e);
       const XMLElement* c = child(e, "Center", true);
       Vec3d centre = vertices_[vertex_index(c, number(c))];
       const XMLElement* r = child(e, "Radius", true);
@@ -518,6 +556,142 @@ void Loader::read_objects(const XMLElement* scene) {
     o.transform.affine_inverse(&invertible);
     if (!invertible) fail(e, "the object's composed transformation is singular");
     scene_.objects.push_back(o);
+  }
+}
+
+// One of the words `names` (the course's spelling), as its index.
+static int keyword(const std::string& word, std::initializer_list<const char*> names) {
+  int i = 0;
+  for (const char* n : names) {
+    if (word == n) return i;
+    ++i;
+  }
+  return -1;
+}
+
+static std::string trimmed(const std::string& s) {
+  size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+TextureMapDesc Loader::read_texture_map(const XMLElement* e,
+                                        const std::map<std::string, std::string>& images,
+                                        std::map<std::string, int>& loaded) {
+  TextureMapDesc t;
+  t.element = path_of(e);
+  TextureDesc& d = t.desc;
+  const char* type = e->Attribute("type");
+  d.type = keyword(type ? type : "", {"image", "perlin", "checkerboard"});
+  if (d.type < 0)
+    fail(e, "type '" + shorten(type) + "' is not image, perlin or checkerboard");
+  const XMLElement* mode = child(e, "DecalMode", true);
+  d.decal = keyword(trimmed(text_of(mode)),
+                    {"replace_kd", "blend_kd", "replace_ks", "replace_background",
+                     "replace_normal", "bump_normal", "replace_all"});
+  if (d.decal < 0) fail_value(mode, "is not a DecalMode of the course");
+  d.interpolation = RT_INTERP_NEAREST;
+  if (const XMLElement* in = child(e, "Interpolation", false)) {
+    d.interpolation = keyword(trimmed(text_of(in)), {"nearest", "bilinear"});
+    if (d.interpolation < 0) fail_value(in, "is neither nearest nor bilinear");
+  }
+  d.normalizer = static_cast<float>(child_number(e, "Normalizer", 255));
+  if (!(d.normalizer > 0)) fail_value(child(e, "Normalizer", true), "must be positive");
+  d.bump_factor = static_cast<float>(child_number(e, "BumpFactor", 1));
+  d.noise_scale = static_cast<float>(child_number(e, "NoiseScale", 1));
+  if (!(d.noise_scale > 0)) fail_value(child(e, "NoiseScale", true), "must be positive");
+  d.noise_conversion = RT_NOISE_LINEAR;
+  if (const XMLElement* nc = child(e, "NoiseConversion", false)) {
+    d.noise_conversion = keyword(trimmed(text_of(nc)), {"linear", "absval"});
+    if (d.noise_conversion < 0) fail_value(nc, "is neither linear nor absval");
+  }
+  d.checker_scale = static_cast<float>(child_number(e, "Scale", 1));
+  d.checker_offset = static_cast<float>(child_number(e, "Offset", 0));
+  d.black = to_float3(child_vec3(e, "BlackColor", {0, 0, 0}));
+  d.white = to_float3(child_vec3(e, "WhiteColor", {1, 1, 1}));
+  if (d.type == RT_TEXTURE_IMAGE) {
+    const XMLElement* ie = child(e, "ImageId", true);
+    std::string id = trimmed(text_of(ie));
+    auto it = images.find(id);
+    if (it == images.end()) fail(ie, "no Image with id '" + shorten(id) + "'");
+    auto [slot, fresh] = loaded.emplace(id, static_cast<int>(scene_.images.size()));
+    if (fresh) {
+      std::filesystem::path path(it->second);
+      if (path.is_relative()) path = std::filesystem::path(file_).parent_path() / path;
+      try {
+        scene_.inputs.push_back(path.string());
+        scene_.images.push_back(read_ldr(path.string()));
+      } catch (const std::exception& err) {
+        fail(ie, std::string("image ") + err.what());
+      }
+    }
+    t.image = slot->second;
+  } else if (d.decal == RT_DECAL_REPLACE_NORMAL || d.decal == RT_DECAL_REPLACE_BACKGROUND) {
+    fail(mode, "'" + trimmed(text_of(mode)) + "' needs an image texture");
+  }
+  return t;
+}
+
+void Loader::read_textures(const XMLElement* scene) {
+  const XMLElement* ts = child(scene, "Textures", false);
+  if (!ts) return;
+  std::map<std::string, std::string> images;  // Image id -> file, read when first used.
+  if (const XMLElement* list = child(ts, "Images", false))
+    for (auto* im = list->FirstChildElement("Image"); im; im = im->NextSiblingElement("Image")) {
+      const char* id = im->Attribute("id");
+      if (!id) fail(im, "missing id attribute");
+      std::string path = trimmed(text_of(im));
+      if (path.empty()) fail(im, "empty file name");
+      images[id] = path;
+    }
+  std::map<std::string, int> loaded;
+  for (auto* e = ts->FirstChildElement("TextureMap"); e; e = e->NextSiblingElement("TextureMap")) {
+    const char* id = e->Attribute("id");
+    if (!id) fail(e, "missing id attribute");
+    TextureMapDesc t = read_texture_map(e, images, loaded);
+    if (t.desc.decal == RT_DECAL_REPLACE_BACKGROUND) {
+      if (scene_.background_texture >= 0)
+        fail(e, "a second replace_background texture (only one background is allowed)");
+      scene_.background_texture = static_cast<int>(scene_.textures.size());
+    }
+    texture_ids_[id] = static_cast<int>(scene_.textures.size());
+    scene_.textures.push_back(t);
+  }
+}
+
+void Loader::read_texcoords(const XMLElement* scene) {
+  const XMLElement* td = child(scene, "TexCoordData", false);
+  if (!td) return;
+  auto v = numbers(td, 0, SIZE_MAX);
+  if (v.size() % 2 != 0) fail(td, std::to_string(v.size()) + " numbers is not a multiple of 2");
+  for (size_t i = 0; i + 1 < v.size(); i += 2) texcoords_.push_back({v[i], v[i + 1]});
+}
+
+std::vector<int> Loader::textures_of(const XMLElement* e) const {
+  std::vector<int> out;
+  const XMLElement* t = child(e, "Textures", false);
+  if (!t) return out;
+  std::istringstream in(text_of(t));
+  std::string id;
+  while (in >> id) {
+    auto it = texture_ids_.find(id);
+    if (it == texture_ids_.end()) fail(t, "no TextureMap with id '" + shorten(id) + "'");
+    if (scene_.textures[it->second].desc.decal == RT_DECAL_REPLACE_BACKGROUND) continue;
+    out.push_back(it->second);
+  }
+  if (out.size() > RT_MAX_OBJECT_TEXTURES)
+    fail_value(t, "lists more than " + std::to_string(RT_MAX_OBJECT_TEXTURES) + " textures");
+  return out;
+}
+
+// Image textures on a mesh need texture coordinates for every vertex.
+void Loader::check_texture_coordinates() const {
+  for (const ObjectDesc& o : scene_.objects) {
+    if (o.kind != ObjectDesc::kMesh || !scene_.meshes[o.mesh].uvs.empty()) continue;
+    for (int t : o.textures)
+      if (scene_.textures[t].desc.type == RT_TEXTURE_IMAGE)
+        throw input_error(file_, o.element,
+                          "uses an image texture (" + scene_.textures[t].element +
+                              ") but has no texture coordinates (TexCoordData or PLY u v)");
   }
 }
 
@@ -581,7 +755,10 @@ SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLE
   read_materials(scene);
   read_transformations(scene);
   read_vertices(scene);
+  read_textures(scene);
+  read_texcoords(scene);
   read_objects(scene);
+  check_texture_coordinates();
   if (scene_.degenerate_triangles > 0)
     warn(file_ + ": Objects: skipped " + std::to_string(scene_.degenerate_triangles) +
          " degenerate triangles");

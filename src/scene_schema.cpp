@@ -60,11 +60,28 @@ const std::vector<Rule>& rules() {
       group("Scene", "Transformations", "TransformationList"),
       value("Scene", "VertexData", "VertexData"),
       group("Scene", "Objects", "Objects"),
-      unsupported("Scene", "TexCoordData", "textures would be missing"),
-      unsupported("Scene", "Textures", "textures would be missing"),
+      value("Scene", "TexCoordData"),
+      group("Scene", "Textures", "Textures"),
       unsupported("Scene", "BRDFs", "Blinn-Phong would replace the BRDFs"),
       unsupported("Scene", "ZeroBasedIndexing", "indices would be read as 1-based"),
       unsupported("VertexData", "@binaryFile", "the vertices would be missing"),
+
+      group("Textures", "Images", "Images"),
+      list("Textures", "TextureMap", "TextureMap"),
+      list("Images", "Image", "", false),
+      attribute("TextureMap", "@type"),
+      unsupported("TextureMap", "@degamma", "the texture's colours would not be linearized"),
+      value("TextureMap", "DecalMode"),
+      value("TextureMap", "ImageId"),
+      value("TextureMap", "Interpolation"),
+      value("TextureMap", "Normalizer"),
+      value("TextureMap", "BumpFactor"),
+      value("TextureMap", "NoiseScale"),
+      value("TextureMap", "NoiseConversion"),
+      value("TextureMap", "Scale"),
+      value("TextureMap", "Offset"),
+      value("TextureMap", "BlackColor"),
+      value("TextureMap", "WhiteColor"),
 
       list("Cameras", "Camera", "Camera"),
       attribute("Camera", "@type"),
@@ -135,7 +152,7 @@ const std::vector<Rule>& rules() {
       attribute("Faces", "@plyFile"),
       attribute("Faces", "@vertexOffset"),
       unsupported("Faces", "@binaryFile", "the faces would be missing"),
-      unsupported("Faces", "@textureOffset", "textures would be missing"),
+      attribute("Faces", "@textureOffset"),
       attribute("Triangle", "@shadingMode"),
       value("Triangle", "Indices"),
       value("Sphere", "Center"),
@@ -150,7 +167,7 @@ const std::vector<Rule>& rules() {
       all.push_back(value(object, "Material"));
       all.push_back(value(object, "Transformations"));
       all.push_back(value(object, "MotionBlur"));
-      all.push_back(unsupported(object, "Textures", "textures would be missing"));
+      all.push_back(value(object, "Textures"));
     }
     return all;
   }();

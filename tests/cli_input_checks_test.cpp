@@ -117,10 +117,12 @@ TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
        "<AmbientLight>25 25 25</AmbientLight><DirectionalLight id=\"1\"><Direction>0 0 -1"
        "</Direction><Radiance>1 1 1</Radiance></DirectionalLight>"},
       {"<Material id=\"1\">", "<Material id=\"1\" BRDF=\"1\">"},
-      {"<Center>4</Center>", "<Center>4</Center><Textures>1</Textures>"},
+      {"</Objects>",
+       "<LightSphere id=\"2\"><Material>1</Material><Center>1</Center><Radius>1"
+       "</Radius><Radiance>1 1 1</Radiance></LightSphere></Objects>"},
       {"<ImageName>", "<Tonemap><TMO>Photographic</TMO></Tonemap><ImageName>"},
   };
-  const char* names[] = {"DirectionalLight", "BRDF", "Textures", "Tonemap"};
+  const char* names[] = {"DirectionalLight", "BRDF", "LightSphere", "Tonemap"};
   for (int i = 0; i < 4; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);

@@ -19,10 +19,12 @@ struct MaterialScene {
   SceneHeader header{};
   SceneData sd{};
   Material material{};
+  InstanceTextures untextured{{-1, -1, -1, -1}};  // The hit's instance 0 lists no texture.
   MaterialScene(int type) {
     header.features = RT_FEATURE_ALL;
     sd.header = &header;
     sd.materials = &material;
+    sd.instance_textures = &untextured;
     material.type = type;
     material.mirror = V(0.5f, 0.25f, 1.0f);
     material.refraction_index = 1.5f;

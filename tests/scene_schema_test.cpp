@@ -61,9 +61,9 @@ TEST(SceneSchema, UnsupportedElementsAndAttributeValuesAreErrors) {
   EXPECT_NE(error_of(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"))
                 .find("handedness=\"left\" (line 2) is not supported: the image would be mirrored"),
             std::string::npos);
-  EXPECT_NE(
-      error_of(with("<Radius>", "<Textures>1</Textures><Radius>")).find("Sphere id=1 > Textures"),
-      std::string::npos);
+  EXPECT_NE(error_of(with("</Objects>", "<LightMesh id=\"2\"/></Objects>"))
+                .find("LightMesh id=2: not supported"),
+            std::string::npos);
   // Right-handed is what the renderer does; empty unsupported elements change nothing.
   SceneDesc s = load(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"right\">"));
   EXPECT_TRUE(s.warnings.empty());

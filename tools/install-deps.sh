@@ -2,7 +2,7 @@
 # Installs the build and test dependencies from Debian 12 packages (as root, or through
 # sudo). Does nothing when every package is already installed.
 set -eu
-PACKAGES="cmake g++ make pkg-config libtinyxml2-dev libpng-dev zlib1g-dev ocl-icd-opencl-dev
+PACKAGES="cmake g++ make pkg-config libtinyxml2-dev libpng-dev libjpeg62-turbo-dev zlib1g-dev ocl-icd-opencl-dev
   opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo libgtest-dev libopenexr-dev
   clang libclang-rt-14-dev"
 missing=""

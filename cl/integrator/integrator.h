@@ -26,10 +26,11 @@ RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 no
   info->normal = normal;
 }
 
-// Radiance along a camera ray; *rays counts every ray cast (camera, secondary, shadow).
+// Radiance along a camera ray through the film at pixel_uv (where a background texture is
+// looked up); *rays counts every ray cast (camera, secondary, shadow).
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
 // evaluate the material, add direct light, scatter.
-RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
+RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, float2 pixel_uv,
                     RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
@@ -49,7 +50,7 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
     int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && task.depth == 0;
     if (!IntersectClosest(sd, task.ray, cull, &hit)) {
       if (task.depth == 0 || (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0)
-        radiance += task.weight * h->background;
+        radiance += task.weight * Background(sd, pixel_uv);
       continue;
     }
     SurfacePoint s = ComputeSurface(sd, task.ray, hit);
@@ -91,7 +92,11 @@ RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint
     *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
   Ray ray = GenerateCameraRay(sd, (float)x + film.x, (float)y + film.y, lens, time);
-  return Li(sd, sk, ray, info, rays);
+  // The background image is stretched over the film, pixel (x, y) at (x, y) / resolution:
+  // with the bilinear lookup's convention (texture/image_texture.h) an image of the film's
+  // size is reproduced texel for texel, as in the course's galactica images.
+  float2 pixel_uv = make_float2((float)x / (float)cam->width, (float)y / (float)cam->height);
+  return Li(sd, sk, ray, pixel_uv, info, rays);
 }
 
 #endif  // RT_INTEGRATOR_H

@@ -9,11 +9,14 @@
 #include "conductor.h"
 #include "dielectric.h"
 #include "mirror.h"
+#include "../texture/texturing.h"
 
 // The parameters shading reads at this point, as a private copy: textures replace values
 // here (diffuse and specular from texels) and perturb s->n, and nothing downstream changes.
 RT_DEVICE Material EvaluateMaterial(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfacePoint* s) {
-  return sd->materials[s->material];
+  Material m = sd->materials[s->material];
+  if (RT_HAS(sd, RT_FEATURE_TEXTURES)) ApplyTextures(sd, s, &m);
+  return m;
 }
 
 // Light of irradiance e arriving from wi, reflected towards wo.

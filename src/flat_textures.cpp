@@ -1,0 +1,34 @@
+// Textures flattened for the devices: every image once, as packed 8-bit RGB texels one
+// after the other, and a descriptor per TextureMap pointing at its image.
+#include <algorithm>
+
+#include "flat_scene.h"
+
+namespace rt {
+
+void flatten_textures(const SceneDesc& scene, FlatScene& f) {
+  std::vector<int> first(scene.images.size());
+  for (size_t i = 0; i < scene.images.size(); ++i) {
+    const ImageF& im = scene.images[i];
+    first[i] = static_cast<int>(f.texels.size());
+    for (size_t p = 0; p < im.size(); ++p) {
+      uint32_t packed = 0;
+      for (int c = 0; c < 3; ++c) {
+        float v = im.pixels[p * im.channels + (im.channels >= 3 ? c : 0)];
+        packed |= static_cast<uint32_t>(std::min(255.0f, std::max(0.0f, v))) << (8 * c);
+      }
+      f.texels.push_back(packed);
+    }
+  }
+  for (const TextureMapDesc& t : scene.textures) {
+    TextureDesc d = t.desc;
+    if (t.image >= 0) {
+      d.first_texel = first[t.image];
+      d.width = scene.images[t.image].width;
+      d.height = scene.images[t.image].height;
+    }
+    f.textures.push_back(d);
+  }
+}
+
+}  // namespace rt
