@@ -61,7 +61,8 @@ TEST(SceneSchema, UnsupportedElementsAndAttributeValuesAreErrors) {
   EXPECT_NE(error_of(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"))
                 .find("handedness=\"left\" (line 2) is not supported: the image would be mirrored"),
             std::string::npos);
-  EXPECT_NE(error_of(with("</Objects>", "<LightMesh id=\"2\"/></Objects>"))
+  EXPECT_NE(error_of(with("</Objects>",
+                          "<LightMesh id=\"2\"><Material>1</Material></LightMesh></Objects>"))
                 .find("LightMesh id=2: not supported"),
             std::string::npos);
   // Right-handed is what the renderer does; empty unsupported elements change nothing.
