@@ -3,7 +3,7 @@
 // render time against relative MSE and the Welch verdict against the reference. It also
 // writes the table as TSV for bench/sweep.sh to plot.
 //
-// usage: sweep SCENE.xml [--camera N] [--scale F] [--ref-spp N] [--tsv FILE]
+// usage: sweep SCENE.xml [--camera N] [--scale F] [--ref-spp N] [--tsv FILE] (sweep --help)
 //
 // Every configuration is validated as it is timed: its error against the reference is in
 // the same row, and a configuration whose Welch test fails is biased, not just noisy.
@@ -23,6 +23,7 @@
 #include "render.h"
 #include "device/device.h"
 #include "integrator/render_scheduler.h"
+#include "util/args.h"
 #include "welch.h"
 
 namespace {
@@ -76,30 +77,22 @@ rt::RenderResult Render(const rt::SceneDesc& scene, const Config& c, int camera,
 }
 
 Args Parse(int argc, char** argv) {
+  using rt::Range;
+  rt::OptionTable<Args> t(
+      "sweep", "sweep SCENE.xml [options]",
+      "Renders a converged CPU reference of SCENE, then a grid of faster settings on both\n"
+      "devices, and prints render time, relative MSE and the Welch verdict of each.");
+  t.section("Sweep")
+      .integer("--camera", "N", Range::closed(0, 1 << 20), RT_FIELD(camera), "the camera")
+      .real("--scale", "F", Range::left_open(0, 16), RT_FIELD(scale),
+            "resolution scale of every render")
+      .integer("--ref-spp", "N", Range::closed(1, 1 << 24), RT_FIELD(ref_spp),
+               "samples per pixel of the converged reference")
+      .text("--tsv", "FILE", RT_FIELD(tsv), "also write the table as TSV (for the plot)");
   Args a;
-  for (int i = 1; i < argc; ++i) {
-    std::string o = argv[i];
-    auto next = [&] {
-      if (i + 1 >= argc) std::exit(2);
-      return std::string(argv[++i]);
-    };
-    if (o == "--camera")
-      a.camera = std::stoi(next());
-    else if (o == "--scale")
-      a.scale = std::stod(next());
-    else if (o == "--ref-spp")
-      a.ref_spp = std::stoi(next());
-    else if (o == "--tsv")
-      a.tsv = next();
-    else if (a.scene.empty() && o[0] != '-')
-      a.scene = o;
-    else {
-      std::fprintf(stderr,
-                   "usage: sweep SCENE.xml [--camera N] [--scale F] [--ref-spp N] [--tsv FILE]\n");
-      std::exit(2);
-    }
-  }
-  if (a.scene.empty()) std::exit(2);
+  std::vector<std::string> scenes = t.parse_or_exit(argc, argv, &a);
+  if (scenes.size() != 1) t.usage_error("needs one SCENE.xml");
+  a.scene = scenes[0];
   return a;
 }
 

@@ -4,15 +4,7 @@
 // rate) and A against B with a planted bias (how often the bias is caught). Renders stay in
 // memory; the statistics are exactly those of the `compare` executable.
 //
-// usage: compare_calibrate SCENE.xml [--camera N] [--scale F] [--spp N] [--trials N]
-//          [--alpha A[,A...]] [--tiles K[,K...]] [--paired-tile K]
-//          [--biases SPEC[,SPEC...]] [--threads N] [--false-alarm-risk R]
-//          [--expect METHOD:TILE:KIND:AMOUNT:RATE ...]
-// SPEC: light:F | roughness:F | shift:P (see planted_bias.h). METHOD: welch, welch-bh, paired.
-// --false-alarm-risk R: fail when an A-vs-A row has so many false alarms that a test
-//   working at its nominal level would show as many with probability <= R.
-// --expect: fail when the detection rate of that row (at the first alpha) is below RATE,
-//   e.g. --expect paired:8:light:1.02:0.99.
+// usage: compare_calibrate SCENE.xml [options]; its options: compare_calibrate --help.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +19,7 @@
 #include "planted_bias.h"
 #include "device/cpu_device.h"
 #include "integrator/render_scheduler.h"
+#include "util/args.h"
 #include "welch.h"
 
 namespace {
@@ -41,47 +34,55 @@ struct Config {
   std::vector<std::string> expects;
 };
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');) out.push_back(item);
-  return out;
+rt::OptionTable<Config> make_table() {
+  using rt::Range;
+  rt::OptionTable<Config> t(
+      "compare_calibrate", "compare_calibrate SCENE.xml [options]",
+      "Renders SCENE with the CPU reference --trials times with fresh seeds and prints how\n"
+      "often compare's tests fail an unbiased render (false alarms) and catch planted\n"
+      "biases. Exit status: 0 every assertion held, 1 one failed, 2 bad usage or input.");
+  auto number = [](Range r) {
+    return [r](const std::string& s) { return rt::parse_number(s, r); };
+  };
+  auto whole = [](Range r) {
+    return [r](const std::string& s) { return static_cast<int>(rt::parse_whole(s, r)); };
+  };
+  auto word = [](const std::string& s) { return s; };
+  t.section("Renders")
+      .integer("--camera", "N", Range::closed(0, 1 << 20), RT_FIELD(camera), "the camera")
+      .real("--scale", "F", Range::left_open(0, 16), RT_FIELD(scale), "resolution scale")
+      .integer("--spp", "N", Range::closed(0, 1 << 20), RT_FIELD(spp),
+               "samples per pixel; 0: the scene's NumSamples")
+      .integer("--trials", "N", Range::closed(1, 1 << 20), RT_FIELD(trials),
+               "renders of A (and of each B)")
+      .integer("--threads", "N", Range::closed(0, 4096), RT_FIELD(threads),
+               "CPU threads; 0: all cores")
+      .list("--biases", "SPEC[,SPEC...]", RT_FIELD(biases), word,
+            "planted biases: light:F, roughness:F or shift:P (see planted_bias.h)");
+  t.section("Tests")
+      .list("--alpha", "A[,A...]", RT_FIELD(alphas), number(Range::open(0, 1)),
+            "significance levels of the verdicts")
+      .list("--tiles", "K[,K...]", RT_FIELD(tiles), whole(Range::closed(1, 1 << 16)),
+            "Welch tile sizes")
+      .integer("--paired-tile", "K", Range::closed(2, 1 << 16), RT_FIELD(paired_tile),
+               "tile size of the paired sign tests");
+  t.section("Assertions")
+      .real("--false-alarm-risk", "R", Range::closed(0, 1), RT_FIELD(false_alarm_risk),
+            "fail when an A-vs-A row has so many false alarms that a test at its nominal "
+            "level would show as many with probability <= R; 0: no check")
+      .list("--expect", "METHOD:TILE:KIND:AMOUNT:RATE", RT_FIELD(expects), word,
+            "fail when that row's detection rate (at the first alpha) is below RATE, e.g. "
+            "paired:8:light:1.02:0.99; METHOD: welch, welch-bh, paired (repeatable)",
+            true);
+  return t;
 }
 
 Config parse(int argc, char** argv) {
+  static const rt::OptionTable<Config> table = make_table();
   Config c;
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: compare_calibrate SCENE.xml [options] (see the source)\n");
-    std::exit(2);
-  }
-  c.scene = argv[1];
-  for (int i = 2; i < argc; ++i) {
-    std::string o = argv[i];
-    if (i + 1 >= argc) {
-      std::fprintf(stderr, "compare_calibrate: %s needs a value\n", o.c_str());
-      std::exit(2);
-    }
-    std::string v = argv[++i];
-    if (o == "--camera") c.camera = std::atoi(v.c_str());
-    else if (o == "--scale") c.scale = std::atof(v.c_str());
-    else if (o == "--spp") c.spp = std::atoi(v.c_str());
-    else if (o == "--trials") c.trials = std::atoi(v.c_str());
-    else if (o == "--threads") c.threads = std::atoi(v.c_str());
-    else if (o == "--paired-tile") c.paired_tile = std::atoi(v.c_str());
-    else if (o == "--false-alarm-risk") c.false_alarm_risk = std::atof(v.c_str());
-    else if (o == "--expect") c.expects.push_back(v);
-    else if (o == "--biases") c.biases = split(v);
-    else if (o == "--alpha") {
-      c.alphas.clear();
-      for (const auto& a : split(v)) c.alphas.push_back(std::atof(a.c_str()));
-    } else if (o == "--tiles") {
-      c.tiles.clear();
-      for (const auto& t : split(v)) c.tiles.push_back(std::atoi(t.c_str()));
-    } else {
-      std::fprintf(stderr, "compare_calibrate: unknown option '%s'\n", o.c_str());
-      std::exit(2);
-    }
-  }
+  std::vector<std::string> scenes = table.parse_or_exit(argc, argv, &c);
+  if (scenes.size() != 1) table.usage_error("needs one SCENE.xml");
+  c.scene = scenes[0];
   return c;
 }
 
@@ -210,9 +211,10 @@ int main(int argc, char** argv) {
     if ((trial + 1) % 10 == 0) std::fprintf(stderr, "  %d/%d trials\n", trial + 1, cfg.trials);
   }
 
-  std::printf("calibration: %s camera %d at %dx%d, %d spp, %d trials (CPU reference; seeds "
-              "2i vs 2i+1, paired biased rows 2i vs 2i)\n",
-              cfg.scene.c_str(), cfg.camera, width, height, spp, cfg.trials);
+  std::printf(
+      "calibration: %s camera %d at %dx%d, %d spp, %d trials (CPU reference; seeds "
+      "2i vs 2i+1, paired biased rows 2i vs 2i)\n",
+      cfg.scene.c_str(), cfg.camera, width, height, spp, cfg.trials);
   std::printf("%-9s %4s %-16s %6s %9s %7s %-17s %6s %6s\n", "test", "tile", "bias", "alpha",
               "failed/N", "rate", "95% CI", "cells", "unif");
   int failures = 0;
@@ -236,9 +238,8 @@ int main(int argc, char** argv) {
         if (p.size() != 5 || row.bias == 0) continue;
         cmp::PlantedBias want = cmp::PlantedBias::parse(p[2] + ":" + p[3]);
         const cmp::PlantedBias& have = variants[row.bias].bias;
-        if (p[0] == row.method && std::atoi(p[1].c_str()) == row.tile &&
-            want.kind == have.kind && want.amount == have.amount && k == 0 &&
-            rate < std::atof(p[4].c_str())) {
+        if (p[0] == row.method && std::atoi(p[1].c_str()) == row.tile && want.kind == have.kind &&
+            want.amount == have.amount && k == 0 && rate < std::atof(p[4].c_str())) {
           flag = "  DETECTION BELOW " + p[4];
           ++failures;
         }
@@ -246,9 +247,8 @@ int main(int argc, char** argv) {
       char ci[40];
       std::snprintf(ci, sizeof ci, "[%.3f, %.3f]", lo, hi);
       std::printf("%-9s %4d %-16s %6.3g %4ld/%-4d %7.4f %-17s %6ld %6ld%s\n", row.method.c_str(),
-                  row.tile, variants[row.bias].bias.label().c_str(), cfg.alphas[k],
-                  row.rejected[k], cfg.trials, rate, ci, row.by_cells[k], row.by_uniformity[k],
-                  flag.c_str());
+                  row.tile, variants[row.bias].bias.label().c_str(), cfg.alphas[k], row.rejected[k],
+                  cfg.trials, rate, ci, row.by_cells[k], row.by_uniformity[k], flag.c_str());
     }
   std::printf("per-test calibration under H0 (A vs A, pooled over trials): share of p below\n");
   for (const Row& row : rows)
@@ -256,8 +256,9 @@ int main(int argc, char** argv) {
       std::printf("  %-9s tile %2d: %ld tests, p<0.05 %.4f, p<0.01 %.4f, p<0.001 %.5f\n",
                   row.method.c_str(), row.tile, row.tests, row.below[0] / double(row.tests),
                   row.below[1] / double(row.tests), row.below[2] / double(row.tests));
-  std::printf("columns: cells = verdicts failed by a cell test or a deterministic failure, "
-              "unif = by the uniformity check\n");
+  std::printf(
+      "columns: cells = verdicts failed by a cell test or a deterministic failure, "
+      "unif = by the uniformity check\n");
   std::printf("%s: %d assertion(s) failed\n", failures ? "FAIL" : "PASS", failures);
   return failures ? 1 : 0;
 }

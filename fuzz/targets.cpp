@@ -78,12 +78,14 @@ void fuzz_cli(const uint8_t* data, size_t size) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  std::string exit_text;
   try {
-    CliOptions o = parse_arguments(static_cast<int>(args.size()), argv.data());
+    CliOptions o = parse_arguments(static_cast<int>(args.size()), argv.data(), &exit_text);
     // A command line that parses names a scene to render (or only lists devices).
-    if (o.scene.empty() && !o.list_devices) throw std::logic_error("no scene, yet accepted");
-  } catch (const CliExit& e) {
-    if (e.message.empty()) throw std::logic_error("exit without a message");
+    if (exit_text.empty() && o.scene.empty() && !o.list_devices)
+      throw std::logic_error("no scene, yet accepted");
+  } catch (const UsageError& e) {
+    if (std::string(e.what()).empty()) throw std::logic_error("a usage error without a message");
   }
 }
 

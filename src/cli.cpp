@@ -1,206 +1,165 @@
 #include "cli.h"
 
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-
 #include "version.h"
 
 namespace rt {
 namespace {
 
-const char* kUsage = R"(usage: raytracer SCENE.xml [options]
-
-Renders every camera of a METU CENG795 scene file to PNG (one file per camera,
-named by its ImageName).
-
-Device:
-  --device auto|cl|cpu   auto (default): OpenCL when a usable device exists, else the
-                         CPU reference (with a notice); cl: OpenCL only; cpu: the C++
-                         reference renderer
-  --cl-device SEL        OpenCL device by index (see --list-devices) or name substring
-  --list-devices         list OpenCL platforms and devices, then exit
-  --kernel generic       compile the all-features kernel instead of one specialized
-                         to the scene's features
-  --no-kernel-cache      always compile the kernel; do not read or write the cache
-  --threads N            CPU reference threads (default: all cores)
-
-Output:
-  --output-dir DIR       where PNGs are written (default: current directory)
-  --camera N             render only camera N (0-based, in file order)
-  --quiet                no progress and no notices
-  --stats                print timings, BVH figures, samples/s and rays/s, features
-  --moments              also write <ImageName minus .png>.moments.exr beside each PNG:
-                         per-pixel sample count, mean and variance of the unclamped
-                         radiance, and the first sample's hit (OpenEXR; see
-                         compare --help and src/io/moments.h for the channels)
-  --strict               treat every warning about the scene as an error (unknown
-                         elements, repeated ids, skipped degenerate triangles)
-  --resolution-scale F   render width*F x height*F pixels (rounded, at least 1) of the
-                         same view, e.g. for quick tests (default 1)
-
-Sampling:
-  --spp N                samples per pixel, overriding the scene's NumSamples
-  --seed N               random stream (default 0); equal seeds give equal images
-  --filter box|gaussian  reconstruction filter (default box)
-  --filter-sigma S       Gaussian standard deviation in pixels (default 0.5)
-  --lens square|disk     lens shape for depth of field (default square, as the course)
-  --time-limit S         stop sampling when the next pass would end after S seconds
-                         (every pixel keeps the same sample count; at least one pass)
-  --noise-target E       stop sampling once the estimated relative error of the image
-                         (root mean of var(pixel mean) / (mean^2 + 1), 0-255 scale)
-                         is below E; E^2 estimates the relative MSE of bench/sweep
-  --dielectric split|choose
-                         split (default, as the course): follow both the reflected and
-                         the refracted ray; choose: follow one, picked by Fresnel
-  --fast-math            OpenCL: build with -cl-fast-relaxed-math (faster, less exact;
-                         the CPU reference is always precise)
-
-Geometry:
-  --cull-back-faces      primary and reflected rays ignore triangles facing away (the
-                         course's hw1 reference images were made this way)
-  --background-on-secondary-miss
-                         reflected/refracted rays that escape see BackgroundColor
-                         (default: only camera rays do)
-  --no-scene-epsilon     ignore ShadowRayEpsilon; rely on the scale-aware offset alone
-  --bvh-bins N           SAH bins per axis (default 16)
-  --bvh-leaf N           largest leaf the SAH may choose (default 4)
-
-  --help, --version
-)";
-
-[[noreturn]] void usage_error(const std::string& what) {
-  throw CliExit{2, "raytracer: " + what + "\n(see raytracer --help)\n"};
+OptionTable<RenderOptions> make_device_table() {
+  OptionTable<RenderOptions> t("raytracer", "", "");
+  t.section("Sampling", Reach::kDevice)
+      .integer("--spp", "N", Range::closed(1, 1 << 20), RT_FIELD(spp),
+               "samples per pixel, overriding the scene's NumSamples (any count; non-squares "
+               "are not stratified)")
+      .default_is("NumSamples")
+      .integer("--seed", "N", Range::closed(0, 4294967295.0), RT_FIELD(seed),
+               "random stream; equal seeds give equal images, bit for bit")
+      .choice("--filter",
+              std::vector<std::pair<std::string, int>>{{"box", RT_FILTER_BOX},
+                                                       {"gaussian", RT_FILTER_GAUSSIAN}},
+              RT_FIELD(filter), "reconstruction filter")
+      .real("--filter-sigma", "S", Range::open(0, 100), RT_FIELD(filter_sigma),
+            "standard deviation of the Gaussian filter, in pixels")
+      .choice("--lens",
+              std::vector<std::pair<std::string, int>>{{"square", RT_LENS_SQUARE},
+                                                       {"disk", RT_LENS_DISK}},
+              RT_FIELD(lens),
+              "lens shape for depth of field (square: the course's lens of edge ApertureSize)")
+      .choice("--dielectric",
+              std::vector<std::pair<std::string, bool>>{{"split", false}, {"choose", true}},
+              RT_FIELD(fresnel_choice),
+              "split (as the course): follow both the reflected and the refracted ray; "
+              "choose: follow one, picked with the Fresnel probability");
+  t.section("Geometry and shading", Reach::kDevice)
+      .flag("--cull-back-faces", RT_FIELD(cull_back_faces),
+            "camera and reflected rays ignore triangles facing away (the course's hw1 images "
+            "were made this way)")
+      .flag("--background-on-secondary-miss", RT_FIELD(background_on_secondary_miss),
+            "reflected and refracted rays that escape see BackgroundColor (otherwise black; "
+            "camera rays always see it)")
+      .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
+            "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
+  t.section("Kernel build", Reach::kDevice)
+      .flag("--fast-math", RT_FIELD(fast_math),
+            "OpenCL: build with -cl-fast-relaxed-math (faster, less exact; the CPU reference "
+            "is always precise)");
+  return t;
 }
 
-long parse_long(const char* opt, const char* value, long lo, long hi) {
-  char* end = nullptr;
-  long v = std::strtol(value, &end, 10);
-  if (!*value || *end || v < lo || v > hi)
-    usage_error(std::string(opt) + ": '" + value + "' is not a whole number in [" +
-                std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return v;
-}
-
-double parse_positive(const char* opt, const char* value) {
-  char* end = nullptr;
-  double v = std::strtod(value, &end);
-  if (!*value || *end || !(v > 0) || !(v < 1e12))
-    usage_error(std::string(opt) + ": '" + value + "' is not a positive number");
-  return v;
+OptionTable<CliOptions> make_raytracer_table() {
+  OptionTable<CliOptions> t(
+      "raytracer", "raytracer SCENE.xml [options]",
+      "Renders every camera of a METU CENG795 scene file to a PNG named by its ImageName\n"
+      "(8-bit RGB). Exit status: 0 done, 1 bad input or a failed render, 2 bad usage.");
+  t.set_version(RT_VERSION);
+  t.section("Device selection")
+      .choice("--device",
+              std::vector<std::pair<std::string, Device>>{
+                  {"auto", Device::kAuto}, {"cl", Device::kOpenCl}, {"cpu", Device::kCpu}},
+              RT_FIELD(device),
+              "auto: OpenCL when a usable device exists, else the CPU reference, with a "
+              "notice; cl: OpenCL or an error; cpu: the C++ reference renderer")
+      .text("--cl-device", "SEL", RT_FIELD(cl_device),
+            "OpenCL device by index (see --list-devices) or name substring")
+      .default_is("the first GPU, else the first device")
+      .flag("--list-devices", RT_FIELD(list_devices),
+            "list OpenCL platforms and devices, then exit")
+      .flag("--no-kernel-cache", RT_FIELD(kernel_cache),
+            "always compile the kernel; do not read or write the compiled-kernel cache", false)
+      .integer("--threads", "N", Range::closed(1, 4096), RT_FIELD(threads),
+               "threads of the CPU reference; the image does not depend on it")
+      .default_is("all cores");
+  t.section("Output")
+      .text("--output-dir", "DIR", RT_FIELD(output_dir), "where PNGs are written")
+      .integer("--camera", "N", Range::closed(0, 1 << 20), RT_FIELD(camera),
+               "render only camera N (0-based, in file order)")
+      .default_is("every camera")
+      .choice("--quantize", quantize_choices(), RT_FIELD(quantize),
+              "radiance to 8 bits after clamping to [0, 255]: truncate as the course's renderer "
+              "(its images are matched exactly), or round half away from zero (unbiased)")
+      .flag("--quiet,-q", RT_FIELD(quiet),
+            "no progress and no notices (progress is also off when stderr is not a terminal)")
+      .flag("--stats", RT_FIELD(stats),
+            "print the time split (load, BVH build, kernel compile, render), BVH figures, "
+            "samples/s, rays/s and the feature bits")
+      .flag("--strict", RT_FIELD(load.strict),
+            "treat every warning about the scene as an error (unknown elements, repeated ids "
+            "that are allowed, skipped degenerate triangles)")
+      .flag("--moments", RT_FIELD(moments),
+            "also write <image>.moments.exr: per-pixel sample count, mean and variance of the "
+            "unclamped radiance, and the first sample's hit (see compare --help and "
+            "src/io/moments.h)")
+      .real("--resolution-scale", "F", Range::left_open(0, 16), RT_FIELD(resolution_scale),
+            "render every camera at F times its resolution (rounded, at least 1), same view");
+  t.section("Stopping")
+      .real("--time-limit", "S", Range::positive(), RT_FIELD(render.stop.time_limit_s),
+            "stop sampling when the next pass would end after S seconds (every pixel keeps "
+            "the same sample count; at least one pass)")
+      .default_is("none")
+      .real("--noise-target", "E", Range::positive(), RT_FIELD(render.stop.noise_target),
+            "stop sampling once the image's estimated relative error (root mean of var(pixel "
+            "mean) / (mean^2 + 1), radiance on the 0-255 scale) is below E; E^2 estimates the "
+            "relative MSE of bench/sweep")
+      .default_is("none");
+  t.section("Acceleration structure")
+      .integer("--bvh-bins", "N", Range::closed(2, 256), RT_FIELD(render.bvh.bins),
+               "SAH bins per axis")
+      .integer("--bvh-leaf", "N", Range::closed(1, 64), RT_FIELD(render.bvh.max_leaf),
+               "largest leaf the SAH may keep");
+  t.include(device_option_table(), RT_FIELD(render));
+  t.section("Kernel build", Reach::kDevice)
+      .choice("--kernel",
+              std::vector<std::pair<std::string, bool>>{{"generic", true}, {"specialized", false}},
+              RT_FIELD(generic_kernel),
+              "compile the all-features kernel, or one specialized to the scene's features");
+  t.add_env("RT_CL_OPTIONS",
+            "extra OpenCL build options appended to the kernel's (a developer's knob, e.g. "
+            "-cl-opt-disable); part of the kernel cache key");
+  t.add_env("XDG_CACHE_HOME",
+            "the compiled-kernel cache is $XDG_CACHE_HOME/raytracer/kernels (when absolute)");
+  t.add_env("HOME", "without XDG_CACHE_HOME, the cache is $HOME/.cache/raytracer/kernels");
+  return t;
 }
 
 }  // namespace
 
-CliOptions parse_cli(int argc, char** argv) {
-  try {
-    return parse_arguments(argc, argv);
-  } catch (const CliExit& e) {
-    std::fputs(e.message.c_str(), e.status == 0 ? stdout : stderr);
-    std::exit(e.status);
-  }
+std::vector<std::pair<std::string, Quantize>> quantize_choices() {
+  return {{"truncate", Quantize::kTruncate}, {"round", Quantize::kRound}};
 }
 
-CliOptions parse_arguments(int argc, char** argv) {
+const OptionTable<RenderOptions>& device_option_table() {
+  static const OptionTable<RenderOptions> table = make_device_table();
+  return table;
+}
+
+const OptionTable<CliOptions>& raytracer_option_table() {
+  static const OptionTable<CliOptions> table = make_raytracer_table();
+  return table;
+}
+
+CliOptions parse_arguments(int argc, char** argv, std::string* exit_text) {
   CliOptions o;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto value = [&]() -> const char* {
-      if (i + 1 >= argc) usage_error(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--help" || a == "-h") {
-      throw CliExit{0, kUsage};
-    } else if (a == "--version") {
-      throw CliExit{0, std::string("raytracer ") + RT_VERSION + "\n"};
-    } else if (a == "--device") {
-      std::string v = value();
-      if (v == "auto") o.device = Device::kAuto;
-      else if (v == "cpu") o.device = Device::kCpu;
-      else if (v == "cl") o.device = Device::kOpenCl;
-      else usage_error("--device: '" + v + "' is not one of auto, cl, cpu");
-    } else if (a == "--cl-device") {
-      o.cl_device = value();
-    } else if (a == "--list-devices") {
-      o.list_devices = true;
-    } else if (a == "--kernel") {
-      std::string v = value();
-      if (v == "generic") o.generic_kernel = true;
-      else if (v == "specialized") o.generic_kernel = false;
-      else usage_error("--kernel: '" + v + "' is not one of generic, specialized");
-    } else if (a == "--no-kernel-cache") {
-      o.kernel_cache = false;
-    } else if (a == "--threads") {
-      o.threads = static_cast<int>(parse_long("--threads", value(), 1, 4096));
-    } else if (a == "--output-dir") {
-      o.output_dir = value();
-    } else if (a == "--camera") {
-      o.camera = static_cast<int>(parse_long("--camera", value(), 0, 1 << 20));
-    } else if (a == "--quiet" || a == "-q") {
-      o.quiet = true;
-    } else if (a == "--stats") {
-      o.stats = true;
-    } else if (a == "--strict") {
-      o.load.strict = true;
-    } else if (a == "--moments") {
-      o.moments = true;
-    } else if (a == "--resolution-scale") {
-      const char* v = value();
-      char* end = nullptr;
-      double f = std::strtod(v, &end);
-      if (!*v || *end || !(f > 0 && f <= 16))
-        usage_error(std::string("--resolution-scale: '") + v + "' is not in (0, 16]");
-      o.resolution_scale = f;
-    } else if (a == "--spp") {
-      o.render.spp = static_cast<int>(parse_long("--spp", value(), 1, 1 << 20));
-    } else if (a == "--seed") {
-      o.render.seed = static_cast<uint32_t>(parse_long("--seed", value(), 0, 4294967295L));
-    } else if (a == "--filter") {
-      std::string v = value();
-      if (v == "box") o.render.filter = RT_FILTER_BOX;
-      else if (v == "gaussian") o.render.filter = RT_FILTER_GAUSSIAN;
-      else usage_error("--filter: '" + v + "' is not one of box, gaussian");
-    } else if (a == "--filter-sigma") {
-      const char* v = value();
-      char* end = nullptr;
-      double s = std::strtod(v, &end);
-      if (*end || !(s > 0 && s < 100)) usage_error(std::string("--filter-sigma: '") + v + "' is not in (0, 100)");
-      o.render.filter_sigma = static_cast<float>(s);
-    } else if (a == "--lens") {
-      std::string v = value();
-      if (v == "square") o.render.lens = RT_LENS_SQUARE;
-      else if (v == "disk") o.render.lens = RT_LENS_DISK;
-      else usage_error("--lens: '" + v + "' is not one of square, disk");
-    } else if (a == "--time-limit") {
-      o.render.stop.time_limit_s = parse_positive("--time-limit", value());
-    } else if (a == "--noise-target") {
-      o.render.stop.noise_target = parse_positive("--noise-target", value());
-    } else if (a == "--dielectric") {
-      std::string v = value();
-      if (v == "split") o.render.fresnel_choice = false;
-      else if (v == "choose") o.render.fresnel_choice = true;
-      else usage_error("--dielectric: '" + v + "' is not one of split, choose");
-    } else if (a == "--fast-math") {
-      o.render.fast_math = true;
-    } else if (a == "--cull-back-faces") {
-      o.render.cull_back_faces = true;
-    } else if (a == "--background-on-secondary-miss") {
-      o.render.background_on_secondary_miss = true;
-    } else if (a == "--no-scene-epsilon") {
-      o.render.use_scene_epsilon = false;
-    } else if (a == "--bvh-bins") {
-      o.render.bvh.bins = static_cast<int>(parse_long("--bvh-bins", value(), 2, 256));
-    } else if (a == "--bvh-leaf") {
-      o.render.bvh.max_leaf = static_cast<int>(parse_long("--bvh-leaf", value(), 1, 64));
-    } else if (!a.empty() && a[0] == '-') {
-      usage_error("unknown option '" + a + "'");
-    } else if (o.scene.empty()) {
-      o.scene = a;
-    } else {
-      usage_error("more than one scene file given ('" + o.scene + "', '" + a + "')");
-    }
+  std::vector<std::string> scenes = raytracer_option_table().parse(argc, argv, &o, exit_text);
+  if (!exit_text->empty()) return o;
+  if (scenes.size() > 1)
+    throw UsageError("more than one scene file given ('" + scenes[0] + "', '" + scenes[1] + "')");
+  if (!scenes.empty()) o.scene = scenes[0];
+  if (o.scene.empty() && !o.list_devices) throw UsageError("no scene file given");
+  return o;
+}
+
+CliOptions parse_cli(int argc, char** argv) {
+  std::string exit_text;
+  CliOptions o;
+  try {
+    o = parse_arguments(argc, argv, &exit_text);
+  } catch (const UsageError& e) {
+    raytracer_option_table().usage_error(e.what());
   }
-  if (o.scene.empty() && !o.list_devices) usage_error("no scene file given");
+  if (!exit_text.empty()) {
+    std::fputs(exit_text.c_str(), stdout);
+    std::exit(0);
+  }
   return o;
 }
 

@@ -87,7 +87,7 @@ int run(const rt::CliOptions& opt) {
       std::fprintf(stderr, "warning: %s: %llu samples gave NaN or infinite radiance (left out)\n",
                    cam.image_name.c_str(), static_cast<unsigned long long>(bad));
     std::filesystem::path out = std::filesystem::path(opt.output_dir) / cam.image_name;
-    rt::write_image(out.string(), r.width, r.height, r.rgb());
+    rt::write_image(out.string(), r.width, r.height, r.rgb(), opt.quantize);
     if (opt.moments) {
       rt::MomentInfo info{
           opt.render.seed, r.spp,     opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",

@@ -77,9 +77,13 @@ TEST_F(Outputs, ExrKeepsLinearValuesUnclamped) {
   EXPECT_EQ(output_files(), std::vector<std::string>{"hdr.EXR"});
 }
 
+// Clamped, then truncated by default (the course's conversion) or rounded on request.
 TEST_F(Outputs, OtherNamesGetTheClampedPng) {
   const std::vector<float> rgb = {1000.5f, 0.25f, 254.6f};
   rt::write_image((dir_ / "out" / "ldr.png").string(), 1, 1, rgb);
+  EXPECT_EQ(rt::read_png((dir_ / "out" / "ldr.png").string()).rgb,
+            (std::vector<uint8_t>{255, 0, 254}));
+  rt::write_image((dir_ / "out" / "ldr.png").string(), 1, 1, rgb, rt::Quantize::kRound);
   EXPECT_EQ(rt::read_png((dir_ / "out" / "ldr.png").string()).rgb,
             (std::vector<uint8_t>{255, 0, 255}));
 }

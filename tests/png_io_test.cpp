@@ -218,10 +218,20 @@ TEST(ToEightBit, RoundsHalfAwayFromZeroAndClamps) {
   const float inf = std::numeric_limits<float>::infinity();
   const std::vector<float> in = {254.5f, -3.0f, 300.0f, nan, 127.49f, 127.5f,
                                  0.5f,   0.49f, 255.0f, inf, -inf,    -0.0f};
-  const Image8 img = to_8bit(4, 1, in);
+  const Image8 img = to_8bit(4, 1, in, Quantize::kRound);
   EXPECT_EQ(img.width, 4);
   EXPECT_EQ(img.height, 1);
   EXPECT_EQ(img.rgb, (Bytes{255, 0, 255, 0, 127, 128, 1, 0, 255, 255, 0, 0}));
+}
+
+// The default, as the course's renderer: clamp, then drop the fraction.
+TEST(ToEightBit, TruncatesByDefaultAfterClamping) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const std::vector<float> in = {254.99f, -3.0f, 300.0f, nan, 127.49f, 127.5f,
+                                 0.99f,   1.0f,  255.0f, inf, -inf,    -0.0f};
+  EXPECT_EQ(to_8bit(4, 1, in).rgb, (Bytes{254, 0, 255, 0, 127, 127, 0, 1, 255, 255, 0, 0}));
+  EXPECT_EQ(to_8bit(4, 1, in, Quantize::kTruncate).rgb, to_8bit(4, 1, in).rgb);
 }
 
 TEST(ToEightBit, RejectsWrongBufferSize) {

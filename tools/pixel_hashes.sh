@@ -7,6 +7,9 @@
 # quick: a quarter of each resolution at 4 samples per pixel (about a minute);
 # full:  every scene at its own resolution and sample count.
 # Scenes whose files are missing in ../shared are listed as "missing".
+# RT_PIXEL_FLAGS: extra raytracer flags for every render, e.g. to compare with a baseline
+# made before the 8-bit conversion truncated by default:
+#   RT_PIXEL_FLAGS="--quantize round" tools/pixel_hashes.sh build quick > b.txt
 set -uo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: pixel_hashes.sh BUILD_DIR quick|full [device...]}" && pwd)"
@@ -17,6 +20,8 @@ devices=("$@")
 shared="$here/../shared/scenes"
 size=()
 [ "$mode" = quick ] && size=(--resolution-scale 0.25 --spp 4)
+# shellcheck disable=SC2206
+size+=(${RT_PIXEL_FLAGS:-})
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 export XDG_CACHE_HOME="$work/cache"

@@ -42,11 +42,12 @@ bool is_exr_path(const std::string& path) {
   return ext == ".exr";
 }
 
-void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb) {
+void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb,
+                 Quantize quantize) {
   if (is_exr_path(path))
     write_exr(path, width, height, rgb);
   else
-    write_png(path, to_8bit(width, height, rgb));
+    write_png(path, to_8bit(width, height, rgb, quantize));
 }
 
 }  // namespace rt

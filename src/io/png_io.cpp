@@ -184,15 +184,16 @@ bool decode_png(std::FILE* file, Image8* out, PngErrorContext* ctx) {
   return true;
 }
 
-uint8_t float_to_byte(float v) {
+uint8_t float_to_byte(float v, Quantize quantize) {
   if (!(v > 0.0f)) return 0;  // Negative, zero and NaN.
   if (v >= 255.0f) return 255;
-  return static_cast<uint8_t>(std::lround(v));
+  // The conversion to an integer truncates toward zero, as the course's renderer does.
+  return static_cast<uint8_t>(quantize == Quantize::kRound ? std::lround(v) : static_cast<long>(v));
 }
 
 }  // namespace
 
-Image8 to_8bit(int width, int height, const std::vector<float>& rgb) {
+Image8 to_8bit(int width, int height, const std::vector<float>& rgb, Quantize quantize) {
   if (width < 0 || height < 0 ||
       rgb.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 3) {
     throw std::invalid_argument("to_8bit: " + std::to_string(width) + "x" + std::to_string(height) +
@@ -203,7 +204,7 @@ Image8 to_8bit(int width, int height, const std::vector<float>& rgb) {
   image.width = width;
   image.height = height;
   image.rgb.resize(rgb.size());
-  for (size_t i = 0; i < rgb.size(); ++i) image.rgb[i] = float_to_byte(rgb[i]);
+  for (size_t i = 0; i < rgb.size(); ++i) image.rgb[i] = float_to_byte(rgb[i], quantize);
   return image;
 }
 

@@ -14,10 +14,18 @@ struct Image8 {
   std::vector<uint8_t> rgb;
 };
 
+// How radiance becomes an 8-bit level after clamping to [0, 255]. The course's renderer
+// truncates (a cast to unsigned char), so its official images sit up to one level below
+// a rounded conversion of the same radiance: truncation reproduces them exactly, rounding
+// is the unbiased choice for everything else.
+enum class Quantize { kTruncate, kRound };
+
 // Converts linear float RGB (3 floats per pixel, row-major, nominal range [0, 255]) to 8 bits.
-// Each value is clamped to [0, 255] and rounded half away from zero (std::lround); NaN -> 0.
-// No gamma is applied. Throws std::invalid_argument if rgb.size() != width * height * 3.
-Image8 to_8bit(int width, int height, const std::vector<float>& rgb);
+// Each value is clamped to [0, 255], then truncated (the course's convention, the default)
+// or rounded half away from zero (std::lround); NaN -> 0. No gamma is applied.
+// Throws std::invalid_argument if rgb.size() != width * height * 3.
+Image8 to_8bit(int width, int height, const std::vector<float>& rgb,
+               Quantize quantize = Quantize::kTruncate);
 
 // Writes a PNG atomically (encoded in memory, then write_file_atomic of io/file_util.h). On any
 // failure (directory missing or unwritable, libpng error, disk full, inconsistent image) no new
