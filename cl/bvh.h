@@ -1,6 +1,8 @@
-// Two-level BVH traversal in one loop. Top-level leaves hold one instance each; entering
-// a mesh instance moves the ray into object space and continues in the mesh's own BVH,
-// and a sentinel on the stack marks where to return to world space. Instances share
+// Two-level wide-BVH traversal in one loop. Each node tests all its children's boxes as
+// one vector operation (cl/simd.h) and visits the hits nearest first. Top-level leaves
+// hold one instance each; entering a mesh instance moves the ray into object space and
+// continues in the mesh's own BVH, and a sentinel on the stack marks where to return to
+// world space. Instances share
 // their mesh's BVH and triangles; nothing is copied per instance.
 #ifndef RT_BVH_H
 #define RT_BVH_H
@@ -10,36 +12,97 @@
 #include "transform.h"
 
 // Deep enough for a binned-SAH BVH of any mesh the build accepts: the builder caps the
-// depth of each level at RT_BVH_MAX_DEPTH (src/bvh_build.cpp checks it).
+// binary depth of each level at RT_BVH_MAX_DEPTH (src/bvh_build.cpp checks it), collapsing
+// never deepens a tree, and each wide level pushes at most RT_BVH_WIDTH - 1 children.
 #define RT_BVH_MAX_DEPTH 64
-#define RT_BVH_STACK (2 * RT_BVH_MAX_DEPTH + 2)
+#define RT_BVH_STACK (2 * (RT_BVH_WIDTH - 1) * RT_BVH_MAX_DEPTH + 2)
 #define RT_STACK_RETURN_TO_WORLD (-1)
+// No node index or leaf reference takes this value; it asks the loop to pop the stack.
+#define RT_BVH_POP (-2147483647 - 1)
 
-// Slab test; returns the entry distance or RT_INFINITY on a miss. The far distance is
-// enlarged by 2 * gamma(3) (pbrt-v4, Bounds3::IntersectP) so rounding never culls a box
-// the ray actually touches.
-RT_DEVICE float IntersectBox(RT_GLOBAL const BvhNode* node, float3 o, float3 inv_d, float tmax) {
-  float tx0 = (node->lo[0] - o.x) * inv_d.x, tx1 = (node->hi[0] - o.x) * inv_d.x;
-  float ty0 = (node->lo[1] - o.y) * inv_d.y, ty1 = (node->hi[1] - o.y) * inv_d.y;
-  float tz0 = (node->lo[2] - o.z) * inv_d.z, tz1 = (node->hi[2] - o.z) * inv_d.z;
-  // A ray in the plane of a face (zero direction component, origin on the face) gives
-  // 0 * inf = NaN there and +-inf at the other face. It stays inside that slab for every t,
-  // so the NaN becomes the opposite infinity and the slab constrains nothing.
-  tx0 = tx0 != tx0 ? -tx1 : tx0;
-  tx1 = tx1 != tx1 ? -tx0 : tx1;
-  ty0 = ty0 != ty0 ? -ty1 : ty0;
-  ty1 = ty1 != ty1 ? -ty0 : ty1;
-  tz0 = tz0 != tz0 ? -tz1 : tz0;
-  tz1 = tz1 != tz1 ? -tz0 : tz1;
-  float tnear = MaxF(MaxF(MinF(tx0, tx1), MinF(ty0, ty1)), MaxF(MinF(tz0, tz1), 0.0f));
-  float tfar = MinF(MinF(MaxF(tx0, tx1), MaxF(ty0, ty1)), MinF(MaxF(tz0, tz1), tmax));
-  tfar *= 1.0000004f;
-  return tnear <= tfar ? tnear : RT_INFINITY;
+RT_DEVICE LaneFloat LaneSplat(float x) {
+#ifdef __OPENCL_C_VERSION__
+  return (LaneFloat)(x);
+#else
+  return x - LaneFloat{};  // Broadcasts x; x - (+0) is x for every x, -0 included.
+#endif
 }
 
-RT_DEVICE float3 SafeInverse(float3 d) {
-  // A zero component gives +-inf, which the slab test handles; -0 keeps its sign.
-  return make_float3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+// The ray as the node test sees it: origin, reciprocal direction, and for each axis which
+// of a node's bounds (BvhNode.bounds) the ray meets first: the low face when the
+// direction is positive, the high face when negative (Williams et al. 2005).
+typedef struct NodeRay {
+  float3 o, inv_d;
+  int near_x, near_y, near_z, far_x, far_y, far_z;
+} NodeRay;
+
+RT_DEVICE NodeRay MakeNodeRay(float3 o, float3 d) {
+  NodeRay r;
+  r.o = o;
+  // A zero component gives +-inf, which the node test handles; -0 keeps its sign.
+  r.inv_d = make_float3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+  r.near_x = r.inv_d.x < 0.0f ? 3 : 0;
+  r.near_y = r.inv_d.y < 0.0f ? 4 : 1;
+  r.near_z = r.inv_d.z < 0.0f ? 5 : 2;
+  r.far_x = 3 - r.near_x;
+  r.far_y = 5 - r.near_y;
+  r.far_z = 7 - r.near_z;
+  return r;
+}
+
+// Slab test of every child box of a node at once; lane i of *tnear gets the entry distance
+// and the result's lane i is non-zero where the ray enters child i before tmax. The far
+// distance is enlarged by 2 * gamma(3) (pbrt-v4, Bounds3::IntersectP) so rounding never
+// culls a box the ray actually touches.
+RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r,
+                                      float tmax, RT_PRIVATE LaneFloat* tnear) {
+  float3 o = r->o, inv_d = r->inv_d;
+  LaneFloat nx = (node->bounds[r->near_x] - o.x) * inv_d.x;
+  LaneFloat ny = (node->bounds[r->near_y] - o.y) * inv_d.y;
+  LaneFloat nz = (node->bounds[r->near_z] - o.z) * inv_d.z;
+  LaneFloat fx = (node->bounds[r->far_x] - o.x) * inv_d.x;
+  LaneFloat fy = (node->bounds[r->far_y] - o.y) * inv_d.y;
+  LaneFloat fz = (node->bounds[r->far_z] - o.z) * inv_d.z;
+  // A ray in the plane of a face (zero direction component, origin on the face) gives
+  // 0 * inf = NaN there. It stays inside that slab for every t, so the slab must constrain
+  // nothing, and it does not: the other face gives -inf as an entry or +inf as an exit,
+  // and a NaN enters LaneMax / LaneMin as the first operand, which they drop (they return
+  // the second operand when either is NaN).
+  LaneFloat tn = LaneMax(nx, LaneMax(ny, LaneMax(nz, LaneSplat(0.0f))));
+  LaneFloat tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
+  tf = tf * 1.0000004f;
+  *tnear = tn;
+  return tn <= tf;  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
+}
+
+// Tests a node's children and returns the nearest child hit (RT_BVH_POP if none), pushing
+// the others farthest first so they pop nearest first. Equal distances keep lane order,
+// the same on both devices.
+RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, float tmax,
+                            RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
+  LaneFloat tnear;
+  LaneInt hits = IntersectChildBoxes(node, r, tmax, &tnear);
+  float lane_t[RT_BVH_WIDTH];
+  int lane_hit[RT_BVH_WIDTH], lane_child[RT_BVH_WIDTH];
+  LaneStoreF(tnear, lane_t);
+  LaneStoreI(hits, lane_hit);
+  LaneStoreI(node->child, lane_child);
+  float sorted_t[RT_BVH_WIDTH];
+  int sorted_child[RT_BVH_WIDTH];
+  int n = 0;
+  for (int i = 0; i < RT_BVH_WIDTH; ++i) {
+    if (lane_hit[i] == 0) continue;
+    int j = n++;
+    for (; j > 0 && sorted_t[j - 1] > lane_t[i]; --j) {
+      sorted_t[j] = sorted_t[j - 1];
+      sorted_child[j] = sorted_child[j - 1];
+    }
+    sorted_t[j] = lane_t[i];
+    sorted_child[j] = lane_child[i];
+  }
+  if (n == 0) return RT_BVH_POP;
+  for (int k = n - 1; k > 0; --k) stack[(*sp)++] = sorted_child[k];
+  return sorted_child[0];
 }
 
 // World-space origin of an instance's ray at the ray's time.
@@ -55,81 +118,76 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
                              RT_PRIVATE Hit* hit) {
   int stack[RT_BVH_STACK];
   int sp = 0;
-  int node_index = sd->header->tlas_root;
-  int instance = -1;  // The instance whose BVH we are in, or -1 at the top level.
+  int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
+  int instance = -1;                // The instance whose BVH we are in, or -1 at the top level.
   float3 o = ray.origin, d = ray.direction;
-  float3 inv_d = SafeInverse(d);
+  NodeRay nr = MakeNodeRay(o, d);
   TriangleRay tr = MakeTriangleRay(o, d);
   float tmax = ray.tmax;
   hit->instance = -1;
   hit->t = tmax;
-  if (node_index < 0) return 0;
+  if (ref < 0) return 0;
   for (;;) {
-    RT_GLOBAL const BvhNode* node = &sd->nodes[node_index];
-    int next = -2;  // -2: pop the stack.
-    if (IntersectBox(node, o, inv_d, tmax) < RT_INFINITY) {
-      if (node->count <= 0) {
-        int axis = -node->count;
-        int dir_negative = Component(d, axis) < 0.0f;
-        stack[sp++] = node->first + 1 - dir_negative;
-        next = node->first + dir_negative;
-      } else if (instance < 0) {
-        // A top-level leaf: exactly one instance.
-        int ii = node->first;
-        RT_GLOBAL const Instance* inst = &sd->instances[ii];
-        float3 io = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
-        float3 id = ray.direction;
-        if (RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0) {
-          io = TransformPoint(inst->world_to_object, io);
-          id = TransformVector(inst->world_to_object, id);
+    int next = RT_BVH_POP;
+    if (ref >= 0) {
+      next = VisitChildren(&sd->nodes[ref], &nr, tmax, stack, &sp);
+    } else if (instance < 0) {
+      // A top-level leaf: exactly one instance.
+      int ii = RtLeafFirst(ref);
+      RT_GLOBAL const Instance* inst = &sd->instances[ii];
+      float3 io = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
+      float3 id = ray.direction;
+      if (RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0) {
+        io = TransformPoint(inst->world_to_object, io);
+        id = TransformVector(inst->world_to_object, id);
+      }
+      if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {
+        float t;
+        if (IntersectUnitSphere(io, id, tmax, &t)) {
+          tmax = t;
+          hit->t = t;
+          hit->instance = ii;
+          hit->primitive = -1;
+          if (any_hit) return 1;
         }
-        if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {
-          float t;
-          if (IntersectUnitSphere(io, id, tmax, &t)) {
-            tmax = t;
-            hit->t = t;
-            hit->instance = ii;
-            hit->primitive = -1;
-            if (any_hit) return 1;
-          }
-        } else if (RT_HAS(sd, RT_FEATURE_TRIANGLES)) {
-          instance = ii;
-          o = io;
-          d = id;
-          inv_d = SafeInverse(d);
-          tr = MakeTriangleRay(o, d);
-          stack[sp++] = RT_STACK_RETURN_TO_WORLD;
-          next = inst->blas_root;
-        }
-      } else {
-        for (int i = node->first; i < node->first + node->count; ++i) {
-          RT_GLOBAL const Triangle* tri = &sd->triangles[i];
-          float t, b1, b2;
-          if (IntersectTriangle(&tr, tri->v0, tri->v1, tri->v2, tmax, cull, &t, &b1, &b2)) {
-            tmax = t;
-            hit->t = t;
-            hit->instance = instance;
-            hit->primitive = i;
-            hit->b1 = b1;
-            hit->b2 = b2;
-            if (any_hit) return 1;
-          }
+      } else if (RT_HAS(sd, RT_FEATURE_TRIANGLES)) {
+        instance = ii;
+        o = io;
+        d = id;
+        nr = MakeNodeRay(o, d);
+        tr = MakeTriangleRay(o, d);
+        stack[sp++] = RT_STACK_RETURN_TO_WORLD;
+        next = inst->blas_root;
+      }
+    } else {
+      int first = RtLeafFirst(ref), end = first + RtLeafCount(ref);
+      for (int i = first; i < end; ++i) {
+        RT_GLOBAL const Triangle* tri = &sd->triangles[i];
+        float t, b1, b2;
+        if (IntersectTriangle(&tr, tri->v0, tri->v1, tri->v2, tmax, cull, &t, &b1, &b2)) {
+          tmax = t;
+          hit->t = t;
+          hit->instance = instance;
+          hit->primitive = i;
+          hit->b1 = b1;
+          hit->b2 = b2;
+          if (any_hit) return 1;
         }
       }
     }
-    while (next == -2) {
+    while (next == RT_BVH_POP) {
       if (sp == 0) return hit->instance >= 0;
       next = stack[--sp];
       if (next == RT_STACK_RETURN_TO_WORLD) {
         instance = -1;
         o = ray.origin;
         d = ray.direction;
-        inv_d = SafeInverse(d);
+        nr = MakeNodeRay(o, d);
         tr = MakeTriangleRay(o, d);
-        next = -2;
+        next = RT_BVH_POP;
       }
     }
-    node_index = next;
+    ref = next;
   }
 }
 

@@ -20,13 +20,18 @@
 #define RT_FEATURE_MOTION_BLUR (1 << 11)     // MotionBlur on any object.
 #define RT_FEATURE_MULTISAMPLE (1 << 12)     // More than one sample per pixel: jittered.
 #define RT_FEATURE_TEXTURES (1 << 13)        // Textures: images, Perlin, checkerboard, bump/normal maps.
-#define RT_FEATURE_ALL ((1 << 14) - 1)
+#define RT_FEATURE_DIRECTIONAL_LIGHTS (1 << 14)  // DirectionalLight.
+#define RT_FEATURE_SPOT_LIGHTS (1 << 15)         // SpotLight.
+#define RT_FEATURE_BRDF (1 << 16)  // A material with a BRDF other than the original Blinn-Phong.
+#define RT_FEATURE_ALL ((1 << 17) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in
 // cl/light/ or cl/material/). Plain Blinn-Phong needs no feature.
 #define RT_LIGHT_POINT RT_FEATURE_POINT_LIGHTS
 #define RT_LIGHT_AREA RT_FEATURE_AREA_LIGHTS
+#define RT_LIGHT_DIRECTIONAL RT_FEATURE_DIRECTIONAL_LIGHTS
+#define RT_LIGHT_SPOT RT_FEATURE_SPOT_LIGHTS
 #define RT_MATERIAL_PLAIN 0
 #define RT_MATERIAL_MIRROR RT_FEATURE_MIRROR
 #define RT_MATERIAL_CONDUCTOR RT_FEATURE_CONDUCTOR

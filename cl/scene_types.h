@@ -8,6 +8,7 @@
 #include "compat.h"
 #include "data_arrays.h"
 #include "features.h"
+#include "simd.h"
 #include "texture/texture_types.h"
 
 // A material's parameters as the file gives them; cl/material/material.h evaluates them
@@ -24,21 +25,28 @@ typedef struct Material {
   float absorption_index;  // Imaginary part of a conductor's index (AbsorptionIndex).
   float roughness;
   int type;
-  int unlit;  // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
-  int pad1, pad2;
+  int unlit;       // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
+  int brdf;        // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
+  int brdf_flags;  // RT_BRDF_NORMALIZED, RT_BRDF_KD_FRESNEL.
 } Material;
 
 // Every light of the scene in one array, tagged by `type` (an RT_LIGHT_* tag); each type
 // reads the members it documents and cl/light/ samples it. Point lights come first, then
 // area lights, so the direct light at a point is summed in the order it always was.
 typedef struct Light {
-  float3 position;  // Point: the light's position. Area: the parallelogram's corner.
+  float3 position;  // Point, spot: the light's position. Area: the parallelogram's corner.
   float3 edge1;     // Area: the points are position + s * edge1 + t * edge2, s, t in [0, 1).
   float3 edge2;
-  float3 normal;                 // Area: unit normal (the light emits from both faces).
-  float3 emission;               // Point: intensity (power per unit solid angle). Area: radiance.
-  float area;                    // Area: |edge1 x edge2|.
-  float param0, param1, param2;  // Type-specific scalars (for example a spot's cone angles).
+  // Area: unit normal (the light emits from both faces). Directional: the unit direction
+  // the light travels in. Spot: the unit axis of its cone.
+  float3 normal;
+  // Point, spot: intensity (power per unit solid angle). Area, directional: radiance.
+  float3 emission;
+  float area;  // Area: |edge1 x edge2|.
+  // Type-specific scalars. Directional: param0, a length longer than the scene's
+  // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
+  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing.
+  float param0, param1, param2;
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;
@@ -84,13 +92,24 @@ typedef struct Instance {
   int flags;
 } Instance;
 
-// A BVH node: leaf when count > 0 (primitives first..first+count-1), otherwise an
-// interior node whose children are first and first+1, split along axis -count.
-typedef struct BvhNode {
-  float lo[3];
-  int first;
-  float hi[3];
-  int count;
+// A node of the wide BVH: the boxes of up to RT_BVH_WIDTH children, one lane per child,
+// stored as one vector per bound (structure of arrays) so one node test checks every child
+// at once with aligned vector loads. child[i] is a node index (>= 0), RT_BVH_EMPTY for an
+// unused lane, or a leaf reference made by RtLeafRef (primitives first..first+count-1 of
+// the triangles at the bottom level, or one instance at the top level).
+#define RT_BVH_EMPTY (-1)
+#define RT_BVH_LEAF_COUNT_BITS 4
+#define RT_BVH_MAX_LEAF (1 << RT_BVH_LEAF_COUNT_BITS)
+// Leaves address primitives below this index (the leaf reference packs it in 27 bits).
+#define RT_BVH_MAX_PRIMITIVES ((1 << (31 - RT_BVH_LEAF_COUNT_BITS)) - 1)
+#define RtLeafRef(first, count) (-2 - (((first) << RT_BVH_LEAF_COUNT_BITS) | ((count)-1)))
+#define RtLeafFirst(ref) ((-2 - (ref)) >> RT_BVH_LEAF_COUNT_BITS)
+#define RtLeafCount(ref) (((-2 - (ref)) & (RT_BVH_MAX_LEAF - 1)) + 1)
+
+typedef struct RT_ALIGN_NODE BvhNode {
+  LaneFloat bounds[6];  // lo x, y, z then hi x, y, z; lane i bounds child i.
+  LaneInt child;
+  LaneInt pad;  // Rounds the node to 128 (width 4) or 256 bytes (width 8): whole cache lines.
 } BvhNode;
 
 typedef struct Triangle {

@@ -1,5 +1,5 @@
-// Binned-SAH BVH construction on the host. The nodes use the layout of cl/scene_types.h
-// and are appended to one array shared by every mesh and the top level.
+// Binned-SAH construction of a binary BVH on the host; src/bvh_wide.h collapses it into
+// the wide nodes the devices traverse (cl/scene_types.h).
 #pragma once
 
 #include <vector>
@@ -22,6 +22,16 @@ struct Aabb {
 struct BvhOptions {
   int bins = 16;     // SAH bins per axis.
   int max_leaf = 4;  // Primitives per leaf the SAH may stop at (the top level uses 1).
+  int threads = 0;   // Build threads; 0: all cores. The tree does not depend on it.
+};
+
+// A binary node: leaf when count > 0 (primitives first..first+count-1), otherwise an
+// interior node whose children are first and first+1, split along axis -count.
+struct BinaryBvhNode {
+  float lo[3];
+  int first;
+  float hi[3];
+  int count;
 };
 
 struct BvhBuildResult {
@@ -32,6 +42,7 @@ struct BvhBuildResult {
 // Builds a BVH over `boxes` into `nodes`. Leaves refer to positions first..first+count-1
 // of `order` shifted by `prim_offset`; the caller stores its primitives in that order.
 BvhBuildResult build_bvh(const std::vector<Aabb>& boxes, const BvhOptions& options, int max_leaf,
-                         int prim_offset, std::vector<BvhNode>& nodes, std::vector<int>& order);
+                         int prim_offset, std::vector<BinaryBvhNode>& nodes,
+                         std::vector<int>& order);
 
 }  // namespace rt

@@ -104,8 +104,8 @@ OptionTable<CliOptions> make_raytracer_table() {
   t.section("Acceleration structure")
       .integer("--bvh-bins", "N", Range::closed(2, 256), RT_FIELD(render.bvh.bins),
                "SAH bins per axis")
-      .integer("--bvh-leaf", "N", Range::closed(1, 64), RT_FIELD(render.bvh.max_leaf),
-               "largest leaf the SAH may keep");
+      .integer("--bvh-leaf", "N", Range::closed(1, RT_BVH_MAX_LEAF), RT_FIELD(render.bvh.max_leaf),
+               "largest leaf the SAH may keep (at most 16, the wide leaf format's limit)");
   t.include(device_option_table(), RT_FIELD(render));
   t.section("Kernel build", Reach::kDevice)
       .choice("--kernel",

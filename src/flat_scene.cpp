@@ -4,7 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bvh_wide.h"
 #include "cl/features.h"
+#include "cl/material/brdf.h"
 
 namespace rt {
 
@@ -14,7 +16,7 @@ static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 112, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
-static_assert(sizeof(BvhNode) == 32, "BvhNode layout");
+static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
 static_assert(sizeof(SceneHeader) == 192, "SceneHeader layout");
 static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
@@ -87,10 +89,25 @@ std::vector<Light> tagged_lights(const SceneDesc& scene) {
     out.push_back(l);
   }
   for (Light l : scene.lights) {
-    l.sample_index = sampled++;
+    // Directional and spot lights draw no random numbers.
+    if (l.type != RT_LIGHT_DIRECTIONAL && l.type != RT_LIGHT_SPOT) l.sample_index = sampled++;
     out.push_back(l);
   }
   return out;
+}
+
+// A directional light's shadow segment runs from the shading point towards the light for
+// `distance`: twice the diagonal of the box around every object (at least 1) leaves the box
+// from any point inside it.
+void set_directional_distance(const std::vector<Aabb>& boxes, std::vector<Light>& lights) {
+  Aabb world;
+  for (const Aabb& b : boxes) world.grow(b);
+  double diagonal = 0;
+  for (int a = 0; a < 3 && !world.empty(); ++a)
+    diagonal += (double(world.hi[a]) - world.lo[a]) * (double(world.hi[a]) - world.lo[a]);
+  float distance = static_cast<float>(std::max(1.0, 2.0 * std::sqrt(diagonal)));
+  for (Light& l : lights)
+    if (l.type == RT_LIGHT_DIRECTIONAL) l.param0 = distance;
 }
 
 }  // namespace
@@ -123,9 +140,11 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
       }
     std::vector<int> order;
     int offset = static_cast<int>(f.triangles.size());
-    BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, f.nodes, order);
-    blas_root[mi] = r.root;
-    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, r.depth);
+    std::vector<BinaryBvhNode> binary;
+    BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, binary, order);
+    WideBvhResult w = collapse_bvh(binary, r.root, f.nodes);
+    blas_root[mi] = w.root;
+    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
     for (auto& b : boxes) blas_box[mi].grow(b);
     std::vector<Vec3d> vn;
     if (mesh.smooth) vn = vertex_normals(mesh);
@@ -188,18 +207,21 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     boxes.push_back(transformed_box(sphere ? unit : blas_box[o.mesh], o.transform, o.motion));
   }
   std::vector<int> order;
-  BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, f.nodes, order);
+  std::vector<BinaryBvhNode> binary;
+  BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, binary, order);
+  WideBvhResult wide_top = collapse_bvh(binary, top.root, f.nodes);
   for (int i : order) {
     f.instances.push_back(unordered[i]);
     f.instance_textures.push_back(unordered_textures[i]);
   }
   flatten_textures(scene, f);
-  f.header.tlas_root = top.root;
-  f.stats.tlas_depth = top.depth;
+  f.header.tlas_root = wide_top.root;
+  f.stats.tlas_depth = wide_top.depth;
   f.stats.nodes = f.nodes.size();
   f.stats.triangles = f.triangles.size();
   f.stats.instances = f.instances.size();
   f.header.num_lights = static_cast<int>(f.lights.size());
+  set_directional_distance(boxes, f.lights);
   // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
 #define RT_PAD_ARRAY(Type, name) \
   if (f.name.empty()) f.name.emplace_back();
@@ -266,6 +288,7 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
     const Material& m = scene.materials[i];
     f |= m.type;  // Type tags are feature bits (cl/features.h).
     if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
+    if (m.brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) f |= RT_FEATURE_BRDF;
   }
   for (const Light& l : tagged_lights(scene)) f |= l.type;
   bool textured = scene.background_texture >= 0;

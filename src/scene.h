@@ -6,6 +6,7 @@
 
 #include "cl/scene_types.h"
 #include "image/image.h"
+#include "image/tonemap.h"
 #include "mat4.h"
 
 // Lights as the file describes them (global, beside the device types they become);
@@ -36,6 +37,9 @@ struct CameraDesc {
   int width = 0, height = 0;
   int samples = 1;
   double aperture = 0, focus_distance = 1;
+  // <Tonemap>: the film is written as HDR and tone mapped to the 8-bit image beside it.
+  bool tonemap = false;
+  PhotographicParams tonemap_params;
 };
 
 // A triangle mesh in its own object space; instances share it.

@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 
+#include "cl/material/brdf.h"
 #include "errors.h"
 #include "image/read_ldr.h"
 #include "ply.h"
@@ -65,7 +66,9 @@ class Loader {
   }
 
   void read_cameras(const XMLElement* scene);
+  void read_tonemap(const XMLElement* tm, CameraDesc* cam) const;
   void read_lights(const XMLElement* scene);
+  void read_brdfs(const XMLElement* scene);
   void read_materials(const XMLElement* scene);
   void read_transformations(const XMLElement* scene);
   void read_vertices(const XMLElement* scene);
@@ -95,6 +98,7 @@ class Loader {
   LoadOptions options_;
   SceneDesc scene_;
   std::map<std::string, int> material_ids_;
+  std::map<std::string, Material> brdfs_;   // BRDF id -> the members a BRDF sets.
   std::map<std::string, Mat4> transforms_;  // Keyed "t1", "s2", "r3", "c4".
   std::vector<Vec3d> vertices_;
   std::vector<std::array<double, 2>> texcoords_;  // TexCoordData, one pair per vertex.
@@ -170,9 +174,14 @@ void Loader::read_cameras(const XMLElement* scene) {
     if (!(cam.near_distance > 0)) fail_value(child(c, "NearDistance", true), "must be positive");
     const char* type = c->Attribute("type");
     if (type && std::string(type) == "lookAt") {
-      Vec3d target = vec3(child(c, "GazePoint", true));
-      cam.gaze = nonzero(child(c, "GazePoint", true), target - cam.position,
-                         "equals the camera Position: no gaze direction");
+      // hw6's lookAt cameras may give a <Gaze> direction instead of a <GazePoint>.
+      if (!child(c, "GazePoint", false) && child(c, "Gaze", false)) {
+        cam.gaze = nonzero(child(c, "Gaze", true), vec3(child(c, "Gaze", true)));
+      } else {
+        Vec3d target = vec3(child(c, "GazePoint", true));
+        cam.gaze = nonzero(child(c, "GazePoint", true), target - cam.position,
+                           "equals the camera Position: no gaze direction");
+      }
       const XMLElement* fov = child(c, "FovY", true);
       double fovy = number(fov);
       if (!(fovy > 0 && fovy < 180)) fail_value(fov, "must lie in (0, 180) degrees");
@@ -232,9 +241,66 @@ void Loader::read_cameras(const XMLElement* scene) {
     cam.focus_distance = child_number(c, "FocusDistance", 1);
     if (cam.aperture > 0 && !(cam.focus_distance > 0))
       fail_value(child(c, "FocusDistance", true), "must be positive");
+    if (const XMLElement* tm = child(c, "Tonemap", false)) read_tonemap(tm, &cam);
     scene_.cameras.push_back(cam);
   }
   if (scene_.cameras.empty()) fail(nullptr, "no <Camera>: nothing to render");
+}
+
+// The photographic operator's parameters (hw5/SPEC.txt); it is the only one the course
+// defines, so any other <TMO> is an error rather than a silently different image.
+void Loader::read_tonemap(const XMLElement* tm, CameraDesc* cam) const {
+  const XMLElement* tmo = child(tm, "TMO", true);
+  std::string name = shorten(text_of(tmo));
+  if (name != "Photographic") fail_value(tmo, "is not a known operator (only Photographic)");
+  auto opts = numbers(child(tm, "TMOOptions", true), 2, 2);
+  if (!(opts[0] > 0)) fail_value(child(tm, "TMOOptions", true), "key value must be positive");
+  if (!(opts[1] >= 0 && opts[1] < 100))
+    fail_value(child(tm, "TMOOptions", true), "burn-out percentage must lie in [0, 100)");
+  cam->tonemap = true;
+  cam->tonemap_params.key = opts[0];
+  cam->tonemap_params.burn_percent = opts[1];
+  cam->tonemap_params.saturation = child_number(tm, "Saturation", 1.0);
+  cam->tonemap_params.gamma = child_number(tm, "Gamma", 2.2);
+  if (!(cam->tonemap_params.saturation >= 0))
+    fail_value(child(tm, "Saturation", true), "must not be negative");
+  if (!(cam->tonemap_params.gamma > 0)) fail_value(child(tm, "Gamma", true), "must be positive");
+}
+
+// <BRDFs> of hw6: each element names a model of cl/brdf.h; materials refer to it by id
+// (Material BRDF="id") and take its exponent in place of PhongExponent.
+void Loader::read_brdfs(const XMLElement* scene) {
+  const XMLElement* list = child(scene, "BRDFs", false);
+  for (auto* e = list ? list->FirstChildElement() : nullptr; e; e = e->NextSiblingElement()) {
+    std::string name = e->Name();
+    Material b{};
+    if (name == "OriginalBlinnPhong")
+      b.brdf = RT_BRDF_ORIGINAL_BLINN_PHONG;
+    else if (name == "OriginalPhong")
+      b.brdf = RT_BRDF_ORIGINAL_PHONG;
+    else if (name == "ModifiedBlinnPhong")
+      b.brdf = RT_BRDF_MODIFIED_BLINN_PHONG;
+    else if (name == "ModifiedPhong")
+      b.brdf = RT_BRDF_MODIFIED_PHONG;
+    else if (name == "TorranceSparrow")
+      b.brdf = RT_BRDF_TORRANCE_SPARROW;
+    else
+      fail(e, "unknown BRDF type");
+    auto flag = [&](const char* attr) {
+      const char* v = e->Attribute(attr);
+      if (!v) return false;
+      if (std::string(v) == "true") return true;
+      if (std::string(v) == "false") return false;
+      fail(e, std::string(attr) + "='" + shorten(v) + "' must be true or false");
+    };
+    if (flag("normalized")) b.brdf_flags |= RT_BRDF_NORMALIZED;
+    if (flag("kdfresnel")) b.brdf_flags |= RT_BRDF_KD_FRESNEL;
+    b.phong_exponent = static_cast<float>(child_number(e, "Exponent", 1));
+    if (!(b.phong_exponent >= 0)) fail_value(child(e, "Exponent", true), "must not be negative");
+    const char* id = e->Attribute("id");
+    if (!id) fail(e, "missing id attribute");
+    brdfs_[id] = b;
+  }
 }
 
 void Loader::read_lights(const XMLElement* scene) {
@@ -285,6 +351,29 @@ void Loader::read_lights(const XMLElement* scene) {
       a.radiance = to_float3(radiance);
       a.area = static_cast<float>(length(normal));
       scene_.area_lights.push_back(a);
+    } else if (name == "DirectionalLight") {
+      Light d{};
+      d.type = RT_LIGHT_DIRECTIONAL;
+      const XMLElement* dir = child(l, "Direction", true);
+      d.normal = to_float3(normalize(nonzero(dir, vec3(dir))));
+      d.emission = to_float3(non_negative(child(l, "Radiance", true)));
+      scene_.lights.push_back(d);  // flatten_scene sets param0 from the scene's bounds.
+    } else if (name == "SpotLight") {
+      Light s{};
+      s.type = RT_LIGHT_SPOT;
+      s.position = to_float3(vec3(child(l, "Position", true)));
+      const XMLElement* dir = child(l, "Direction", true);
+      s.normal = to_float3(normalize(nonzero(dir, vec3(dir))));
+      s.emission = to_float3(non_negative(child(l, "Intensity", true)));
+      const XMLElement* cov = child(l, "CoverageAngle", true);
+      const XMLElement* fall = child(l, "FalloffAngle", true);
+      double coverage = number(cov), falloff = number(fall);
+      if (!(coverage > 0 && coverage <= 360)) fail_value(cov, "must lie in (0, 360] degrees");
+      if (!(falloff >= 0 && falloff <= coverage))
+        fail_value(fall, "must lie in [0, CoverageAngle] degrees");
+      s.param1 = static_cast<float>(std::cos(coverage * M_PI / 360.0));
+      s.param0 = static_cast<float>(std::cos(falloff * M_PI / 360.0));
+      scene_.lights.push_back(s);
     }  // Other kinds were reported by check_scene_structure.
   }
 }
@@ -328,6 +417,23 @@ void Loader::read_materials(const XMLElement* scene) {
       m.type = RT_MATERIAL_MIRROR;
     } else if (!type.empty()) {
       warn(e, "unknown material type '" + type + "', treated as plain");
+    }
+    if (const char* brdf = e->Attribute("BRDF")) {
+      auto it = brdfs_.find(brdf);
+      if (it == brdfs_.end()) fail(e, std::string("BRDF='") + shorten(brdf) + "' names no BRDF");
+      m.brdf = it->second.brdf;
+      m.brdf_flags = it->second.brdf_flags;
+      m.phong_exponent = it->second.phong_exponent;
+    }
+    // degamma="true": the reflectances were picked as display (gamma-encoded) colours, so
+    // they are decoded with the course's gamma of 2.2 to linear values.
+    if (const char* dg = e->Attribute("degamma"); dg && std::string(dg) == "true") {
+      auto decode = [](float3 c) {
+        return make_float3(std::pow(c.x, 2.2f), std::pow(c.y, 2.2f), std::pow(c.z, 2.2f));
+      };
+      m.ambient = decode(m.ambient);
+      m.diffuse = decode(m.diffuse);
+      m.specular = decode(m.specular);
     }
     const char* id = e->Attribute("id");
     material_ids_[id ? id : std::to_string(scene_.materials.size() + 1)] =
@@ -752,6 +858,7 @@ SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLE
   }
   read_cameras(scene);
   read_lights(scene);
+  read_brdfs(scene);
   read_materials(scene);
   read_transformations(scene);
   read_vertices(scene);

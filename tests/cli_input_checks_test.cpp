@@ -114,15 +114,15 @@ TEST_F(CliInputChecks, NameTooLongForTheFileSystemRefusedBeforeRendering) {
 TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
   const std::pair<const char*, const char*> cases[] = {
       {"<AmbientLight>25 25 25</AmbientLight>",
-       "<AmbientLight>25 25 25</AmbientLight><DirectionalLight id=\"1\"><Direction>0 0 -1"
-       "</Direction><Radiance>1 1 1</Radiance></DirectionalLight>"},
-      {"<Material id=\"1\">", "<Material id=\"1\" BRDF=\"1\">"},
+       "<AmbientLight>25 25 25</AmbientLight><SphericalDirectionalLight id=\"1\"><ImageId>1"
+       "</ImageId></SphericalDirectionalLight>"},
+      {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
       {"</Objects>",
        "<LightSphere id=\"2\"><Material>1</Material><Center>1</Center><Radius>1"
        "</Radius><Radiance>1 1 1</Radiance></LightSphere></Objects>"},
-      {"<ImageName>", "<Tonemap><TMO>Photographic</TMO></Tonemap><ImageName>"},
+      {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
   };
-  const char* names[] = {"DirectionalLight", "BRDF", "LightSphere", "Tonemap"};
+  const char* names[] = {"SphericalDirectionalLight", "handedness", "LightSphere", "Renderer"};
   for (int i = 0; i < 4; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);

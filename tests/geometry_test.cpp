@@ -1007,18 +1007,18 @@ TEST(GeometryOffset, TiltedPlaneFarAlongAnAxisItNearlyContains) {
 // BVH construction
 // ------------------------------------------------------------------------------------------
 
-bool Contains(const BvhNode& n, const Aabb& b) {
+bool Contains(const BinaryBvhNode& n, const Aabb& b) {
   for (int k = 0; k < 3; ++k)
     if (b.lo[k] < n.lo[k] || b.hi[k] > n.hi[k]) return false;
   return true;
 }
-bool Contains(const BvhNode& n, const BvhNode& c) {
+bool Contains(const BinaryBvhNode& n, const BinaryBvhNode& c) {
   for (int k = 0; k < 3; ++k)
     if (c.lo[k] < n.lo[k] || c.hi[k] > n.hi[k]) return false;
   return true;
 }
 
-void ValidateBvh(const std::vector<Aabb>& boxes, const std::vector<BvhNode>& nodes,
+void ValidateBvh(const std::vector<Aabb>& boxes, const std::vector<BinaryBvhNode>& nodes,
                  size_t first_node, const BvhBuildResult& r, const std::vector<int>& order,
                  int prim_offset, int max_leaf) {
   const int n = static_cast<int>(boxes.size());
@@ -1037,7 +1037,7 @@ void ValidateBvh(const std::vector<Aabb>& boxes, const std::vector<BvhNode>& nod
     ASSERT_LT(index, static_cast<int>(nodes.size()));
     ASSERT_EQ(++visits[index], 1) << "node reached twice";
     max_depth = std::max(max_depth, depth);
-    const BvhNode& node = nodes[index];
+    const BinaryBvhNode& node = nodes[index];
     if (node.count > 0) {
       ASSERT_LE(node.count, std::max(1, max_leaf));
       int begin = node.first - prim_offset;
@@ -1083,7 +1083,7 @@ TEST(GeometryBvhBuild, RandomBoxesGiveAValidTree) {
         std::vector<Aabb> boxes;
         for (int i = 0; i < count; ++i) boxes.push_back(RandomBox(rng, 10, i % 7 == 0 ? 8 : 1));
         // Existing nodes and a primitive offset, as for the second mesh of a scene.
-        std::vector<BvhNode> nodes(5);
+        std::vector<BinaryBvhNode> nodes(5);
         std::vector<int> order;
         BvhOptions opt;
         opt.bins = bins;
@@ -1100,7 +1100,7 @@ TEST(GeometryBvhBuild, DegenerateInputsStillGiveAValidTree) {
     // Identical boxes: no split separates the centroids (object-median fallback).
     std::vector<Aabb> same(300);
     for (auto& b : same) b.grow(1, 2, 3), b.grow(2, 3, 4);
-    std::vector<BvhNode> nodes;
+    std::vector<BinaryBvhNode> nodes;
     std::vector<int> order;
     BvhBuildResult r = build_bvh(same, opt, max_leaf, 0, nodes, order);
     ValidateBvh(same, nodes, 0, r, order, 0, max_leaf);
@@ -1111,7 +1111,7 @@ TEST(GeometryBvhBuild, DegenerateInputsStillGiveAValidTree) {
     r = build_bvh(line, opt, max_leaf, 0, nodes, order);
     ValidateBvh(line, nodes, 0, r, order, 0, max_leaf);
   }
-  std::vector<BvhNode> nodes;
+  std::vector<BinaryBvhNode> nodes;
   std::vector<int> order;
   EXPECT_EQ(build_bvh({}, BvhOptions{}, 4, 0, nodes, order).root, -1);
   EXPECT_TRUE(nodes.empty());

@@ -55,8 +55,9 @@ std::string error_of(const std::string& xml, bool strict = false) {
 
 TEST(SceneSchema, UnsupportedElementsAndAttributeValuesAreErrors) {
   EXPECT_NE(error_of(with("</Lights>",
-                          "<SpotLight id=\"2\"><Position>0 0 0</Position></SpotLight></Lights>"))
-                .find("s.xml: Lights > SpotLight id=2: not supported (line 5)"),
+                          "<SphericalDirectionalLight id=\"2\"><ImageId>1</ImageId>"
+                          "</SphericalDirectionalLight></Lights>"))
+                .find("s.xml: Lights > SphericalDirectionalLight id=2: not supported (line 5)"),
             std::string::npos);
   EXPECT_NE(error_of(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"))
                 .find("handedness=\"left\" (line 2) is not supported: the image would be mirrored"),

@@ -23,7 +23,7 @@ RT_DEVICE float3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE con
   if (!ls.valid || Dot(s->n, ls.wi) <= 0.0f) return Vec3(0.0f);
   float3 origin = OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale);
   if (!Unoccluded(sd, origin, ls.p_light - origin, s->time, rays)) return Vec3(0.0f);
-  return EvaluateBsdf(m, s->n, s->wo, ls.wi, ls.irradiance);
+  return EvaluateBsdf(sd, m, s->n, s->wo, ls.wi, ls.irradiance);
 }
 
 // Summed in the lights' array order (point lights, then area lights), which fixes the

@@ -7,7 +7,9 @@
 #include "../features.h"
 #include "../sampler.h"
 #include "area.h"
+#include "directional.h"
 #include "point.h"
+#include "spot.h"
 
 // The random dimension of a light's sample at a ray, offset from the ray's key (the
 // course's first bounce stratifies it; see RaySampler).
@@ -21,6 +23,9 @@ RT_DEVICE LightSample SampleLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL cons
     return SamplePointLight(light, ctx);
   if (RT_HAS(sd, RT_LIGHT_AREA) && light->type == RT_LIGHT_AREA)
     return SampleAreaLight(light, ctx, RaySample2D(rs, LightSampleOffset(light)));
+  if (RT_HAS(sd, RT_LIGHT_DIRECTIONAL) && light->type == RT_LIGHT_DIRECTIONAL)
+    return SampleDirectionalLight(light, ctx);
+  if (RT_HAS(sd, RT_LIGHT_SPOT) && light->type == RT_LIGHT_SPOT) return SampleSpotLight(light, ctx);
   LightSample none = LightSampleTowards(ctx->p, ctx->p, Vec3(0.0f));  // Not valid.
   return none;
 }

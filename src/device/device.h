@@ -95,7 +95,7 @@ std::unique_ptr<RenderDevice> create_device(const DeviceOptions& options, std::s
 class DevicePool {
  public:
   // The device for `options`, opened on first use; nullptr with *why (one line) when it
-  // cannot be (kAuto never falls back here: it is kOpenCl or kCpu as asked).
+  // cannot be. kAuto may fall back to the CPU reference, without the notice.
   RenderDevice* get(const DeviceOptions& options, std::string* why);
 
  private:

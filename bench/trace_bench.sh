@@ -1,0 +1,106 @@
+#!/bin/bash
+# Benchmark of ray tracing speed: camera rays per CPU-second (lights removed, recursion
+# depth 0, one ray per sample), BVH build time and peak memory, on tap_0200 and generated
+# bumpy planes of 1 M and 4 M triangles, on both devices. With --baseline, a second build
+# runs interleaved with the first (A B A B) and the table gets its figures and the ratio.
+#
+# usage: bench/trace_bench.sh [--build DIR] [--baseline DIR] [--reps N] [--spp N]
+#                             [--scenes "tap 1M 4M"] [--devices "cpu cl"]
+# Camera-ray rate = (spp - 1) * pixels / (CPU-s at spp - CPU-s at 1 spp): the difference
+# cancels loading, BVH build, kernel compile and upload, leaving the tracing alone.
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="$here/build"
+baseline=""
+reps=3
+spp=9
+scene_names="tap 1M 4M"
+devices="cpu cl"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --build) build="$(cd "$2" && pwd)"; shift 2 ;;
+    --baseline) baseline="$(cd "$2" && pwd)"; shift 2 ;;
+    --reps) reps="$2"; shift 2 ;;
+    --spp) spp="$2"; shift 2 ;;
+    --scenes) scene_names="$2"; shift 2 ;;
+    --devices) devices="$2"; shift 2 ;;
+    *) echo "trace_bench.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export XDG_CACHE_HOME="$work/cache"
+
+# A copy of SCENE without lights and with recursion depth 0. Links to the files beside it
+# and beside its folder keep relative paths such as ../ply/x.ply working.
+camera_only() {  # SCENE NAME -> path of the stripped scene
+  local src="$(cd "$(dirname "$1")" && pwd)" root="$work/$2"
+  local dir="$root/$(basename "$src")"
+  mkdir -p "$dir"
+  for f in "$(dirname "$src")"/*; do [ "$f" = "$src" ] || ln -sf "$f" "$root/"; done
+  for f in "$src"/*; do ln -sf "$f" "$dir/"; done
+  rm -f "$dir/$(basename "$1")"
+  sed -e '/<Lights>/,/<\/Lights>/d' -e 's|<MaxRecursionDepth>[0-9]*<|<MaxRecursionDepth>0<|' \
+    "$1" > "$dir/$(basename "$1")"
+  echo "$dir/$(basename "$1")"
+}
+
+scene_path() {  # NAME -> scene file (generating bumpy planes on demand)
+  case "$1" in
+    tap) echo "$here/../shared/scenes/hw3/tap_water/xml/tap_0200.xml" ;;
+    *M)
+      local n=$(( ${1%M} * 1000000 ))
+      mkdir -p "$work/gen_$1"
+      "$build/bumpy_plane" "$n" "$work/gen_$1"
+      echo "$work/gen_$1/bumpy.xml" ;;
+    *) echo "trace_bench.sh: unknown scene '$1'" >&2; exit 2 ;;
+  esac
+}
+
+# One run: prints "cpu_seconds peak_kib bvh_ms".
+measure() {  # BUILD SCENE DEVICE SPP
+  local log="$work/log"
+  /usr/bin/time -f 'time %U %S %M' "$1/raytracer" "$2" --device "$3" --spp "$4" --camera 0 \
+    --quiet --stats --output-dir "$work" > "$log" 2>&1 || { cat "$log" >&2; exit 1; }
+  awk '/^time /{cpu = $2 + $3; mem = $4} /^stats: .*bvh/{for (i = 1; i < NF; ++i)
+       if ($i == "bvh") bvh = $(i + 1)} END {print cpu, mem, bvh}' "$log"
+}
+
+median() { sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+
+builds=("$build")
+[ -n "$baseline" ] && builds+=("$baseline")
+echo "camera rays (no lights, depth 0), ${spp} vs 1 spp, $reps interleaved repetitions, medians"
+echo "OpenCL device: $("$build/raytracer" --list-devices 2>/dev/null | head -1)"
+echo
+echo "| scene | triangles | device | build | Mrays/CPU-s | BVH build ms | peak MiB (1 spp) |"
+echo "|---|---:|---|---|---:|---:|---:|"
+for name in $scene_names; do
+  scene="$(scene_path "$name")"
+  [ -f "$scene" ] || { echo "| $name | missing | | | | | |"; continue; }
+  cam="$(camera_only "$scene" "cam_$name")"
+  tris=$("$build/raytracer" "$cam" --spp 1 --quiet --stats --output-dir "$work" --device cpu 2>&1 |
+         grep -o '[0-9]* triangles' | head -1 | awk '{print $1}')
+  pixels=$(grep -o '<ImageResolution>[0-9 ]*' "$scene" | head -1 | awk -F'>' '{split($2, r, " "); print r[1] * r[2]}')
+  for dev in $devices; do
+    for b in "${builds[@]}"; do measure "$b" "$cam" "$dev" 1 > /dev/null; done  # Kernel cache.
+    declare -A rate=() bvh=() mem=()
+    for ((i = 0; i < reps; i++)); do
+      for b in "${builds[@]}"; do
+        read -r c1 m1 b1 < <(measure "$b" "$cam" "$dev" 1)
+        read -r cn mn bn < <(measure "$b" "$cam" "$dev" "$spp")
+        rate[$b]+="$(awk -v a="$c1" -v b="$cn" -v r="$(( (spp - 1) * pixels ))" \
+                     'BEGIN {print (b > a) ? r / (b - a) * 1e-6 : 0}') "
+        bvh[$b]+="$b1 "
+        mem[$b]+="$m1 "
+      done
+    done
+    for b in "${builds[@]}"; do
+      label=$([ "$b" = "$build" ] && echo new || echo baseline)
+      printf '| %s | %s | %s | %s | %.2f | %.0f | %.0f |\n' "$name" "$tris" "$dev" "$label" \
+        "$(echo ${rate[$b]} | tr ' ' '\n' | median)" "$(echo ${bvh[$b]} | tr ' ' '\n' | median)" \
+        "$(echo ${mem[$b]} | tr ' ' '\n' | median | awk '{print $1 / 1024}')"
+    done
+    unset rate bvh mem
+  done
+done

@@ -1,0 +1,49 @@
+// Short vectors of RT_BVH_WIDTH lanes for the wide BVH's node test. OpenCL C has them
+// built in (float4 / float8); in C++ the GCC/Clang vector extensions give the same
+// element-wise operators, comparisons that yield -1 / 0 per lane, and `mask ? a : b`
+// selection, which the compiler maps to SSE (or AVX where enabled). The node test is thus
+// written once, in operators both languages share, and rounds the same on both devices.
+#ifndef RT_SIMD_H
+#define RT_SIMD_H
+
+#include "compat.h"
+
+// Children per BVH node. 4 won over 8 on the CPU reference and on PoCL (bench/README.md).
+#ifndef RT_BVH_WIDTH
+#define RT_BVH_WIDTH 4
+#endif
+
+#ifdef __OPENCL_C_VERSION__
+
+#if RT_BVH_WIDTH == 4
+typedef float4 LaneFloat;
+typedef int4 LaneInt;
+#define LaneStoreF(v, p) vstore4((v), 0, (p))
+#define LaneStoreI(v, p) vstore4((v), 0, (p))
+#else
+typedef float8 LaneFloat;
+typedef int8 LaneInt;
+#define LaneStoreF(v, p) vstore8((v), 0, (p))
+#define LaneStoreI(v, p) vstore8((v), 0, (p))
+#endif
+#define RT_ALIGN_NODE __attribute__((aligned(64)))
+
+#else  // C++17
+
+#include <cstring>
+
+typedef float LaneFloat __attribute__((vector_size(4 * RT_BVH_WIDTH)));
+typedef int LaneInt __attribute__((vector_size(4 * RT_BVH_WIDTH)));
+inline void LaneStoreF(LaneFloat v, float* p) { std::memcpy(p, &v, sizeof v); }
+inline void LaneStoreI(LaneInt v, int* p) { std::memcpy(p, &v, sizeof v); }
+// Whole nodes on cache lines; OpenCL buffers are aligned at least as well.
+#define RT_ALIGN_NODE alignas(64)
+
+#endif
+
+// Per-lane minimum and maximum with the scalar MinF / MaxF rule (the second operand
+// when either is NaN), so a lane computes exactly what the scalar test would.
+RT_DEVICE LaneFloat LaneMin(LaneFloat a, LaneFloat b) { return a < b ? a : b; }
+RT_DEVICE LaneFloat LaneMax(LaneFloat a, LaneFloat b) { return a > b ? a : b; }
+
+#endif  // RT_SIMD_H

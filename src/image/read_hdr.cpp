@@ -1,0 +1,184 @@
+#include "image/read_hdr.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "errors.h"
+
+namespace rt {
+namespace {
+
+InputError exr_error(const std::string& path, const std::string& why) {
+  return InputError(path + ": cannot read EXR: " + why);
+}
+
+InputError hdr_error(const std::string& path, const std::string& why) {
+  return InputError(path + ": cannot read HDR: " + why);
+}
+
+// The largest image either reader accepts (2^28 pixels): a corrupt header must not make
+// us allocate tens of gigabytes.
+constexpr long long kMaxPixels = 1LL << 28;
+
+}  // namespace
+
+ImageF read_exr(const std::string& path) {
+  ImageF img;
+  img.max_value = 0.0f;
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i dw = file.header().dataWindow();
+    long long w = static_cast<long long>(dw.max.x) - dw.min.x + 1;
+    long long h = static_cast<long long>(dw.max.y) - dw.min.y + 1;
+    if (w <= 0 || h <= 0 || w * h > kMaxPixels)
+      throw exr_error(path, "data window of " + std::to_string(w) + "x" + std::to_string(h));
+    const Imf::ChannelList& ch = file.header().channels();
+    std::vector<const char*> names;
+    if (ch.findChannel("R") && ch.findChannel("G") && ch.findChannel("B")) {
+      names = {"R", "G", "B"};
+      if (ch.findChannel("A")) names.push_back("A");
+    } else if (ch.findChannel("Y")) {
+      names = {"Y"};
+    } else {
+      throw exr_error(path, "no R, G, B or Y channels");
+    }
+    img.width = static_cast<int>(w);
+    img.height = static_cast<int>(h);
+    img.channels = static_cast<int>(names.size());
+    img.pixels.assign(img.size() * img.channels, 0.0f);
+    // OpenEXR addresses pixel (x, y) as base + x * xstride + y * ystride over the data
+    // window, which need not start at (0, 0).
+    size_t xs = sizeof(float) * img.channels, ys = xs * img.width;
+    Imf::FrameBuffer fb;
+    for (int c = 0; c < img.channels; ++c) {
+      char* base = reinterpret_cast<char*>(img.pixels.data() + c) -
+                   static_cast<ptrdiff_t>(dw.min.x) * xs - static_cast<ptrdiff_t>(dw.min.y) * ys;
+      fb.insert(names[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
+    }
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw exr_error(path, e.what());
+  }
+  return img;
+}
+
+namespace {
+
+// Reads one header line (without its newline) from a byte buffer.
+bool next_line(const std::vector<unsigned char>& d, size_t* pos, std::string* line) {
+  line->clear();
+  while (*pos < d.size() && d[*pos] != '\n') line->push_back(static_cast<char>(d[(*pos)++]));
+  if (*pos >= d.size()) return false;
+  ++*pos;
+  return true;
+}
+
+// Decodes one scanline of `width` RGBE pixels at d[*pos], in either the flat layout or the
+// run-length encoding of Radiance 2.0 (a 2, 2, width marker, then each of the four
+// components as runs), into `out` (width * 4 bytes).
+bool read_scanline(const std::vector<unsigned char>& d, size_t* pos, int width,
+                   unsigned char* out) {
+  size_t p = *pos;
+  bool rle = width >= 8 && width < 32768 && p + 4 <= d.size() && d[p] == 2 && d[p + 1] == 2 &&
+             ((d[p + 2] << 8) | d[p + 3]) == width && (d[p + 2] & 0x80) == 0;
+  if (!rle) {
+    if (p + static_cast<size_t>(width) * 4 > d.size()) return false;
+    std::copy(d.begin() + p, d.begin() + p + width * 4, out);
+    *pos = p + static_cast<size_t>(width) * 4;
+    return true;
+  }
+  p += 4;
+  for (int c = 0; c < 4; ++c) {
+    int x = 0;
+    while (x < width) {
+      if (p >= d.size()) return false;
+      int count = d[p++];
+      bool run = count > 128;
+      if (run) count -= 128;
+      if (count == 0 || x + count > width) return false;
+      if (run) {
+        if (p >= d.size()) return false;
+        for (int i = 0; i < count; ++i) out[(x + i) * 4 + c] = d[p];
+        ++p;
+      } else {
+        if (p + count > d.size()) return false;
+        for (int i = 0; i < count; ++i) out[(x + i) * 4 + c] = d[p + i];
+        p += count;
+      }
+      x += count;
+    }
+  }
+  *pos = p;
+  return true;
+}
+
+}  // namespace
+
+ImageF read_radiance_hdr(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw hdr_error(path, "cannot open the file");
+  std::vector<unsigned char> d((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+  size_t pos = 0;
+  std::string line;
+  if (!next_line(d, &pos, &line) || line.rfind("#?", 0) != 0)
+    throw hdr_error(path, "no '#?RADIANCE' signature");
+  // Header variables until an empty line; only the pixel format matters here.
+  for (;;) {
+    if (!next_line(d, &pos, &line)) throw hdr_error(path, "header has no end");
+    if (line.empty()) break;
+    if (line.rfind("FORMAT=", 0) == 0 && line != "FORMAT=32-bit_rle_rgbe")
+      throw hdr_error(path, "unsupported " + line);
+  }
+  if (!next_line(d, &pos, &line)) throw hdr_error(path, "no resolution line");
+  int w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(line.c_str(), "-Y %d +X %d%c", &h, &w, &tail) != 2)
+    throw hdr_error(path, "unsupported resolution line '" + line + "' (only -Y h +X w)");
+  if (w <= 0 || h <= 0 || static_cast<long long>(w) * h > kMaxPixels)
+    throw hdr_error(path, "image size " + std::to_string(w) + "x" + std::to_string(h));
+  ImageF img;
+  img.width = w;
+  img.height = h;
+  img.channels = 3;
+  img.max_value = 0.0f;
+  img.pixels.resize(img.size() * 3);
+  std::vector<unsigned char> row(static_cast<size_t>(w) * 4);
+  for (int y = 0; y < h; ++y) {
+    if (!read_scanline(d, &pos, w, row.data()))
+      throw hdr_error(path, "scanline " + std::to_string(y) + " is truncated or corrupt");
+    for (int x = 0; x < w; ++x) {
+      const unsigned char* rgbe = &row[static_cast<size_t>(x) * 4];
+      float* o = &img.pixels[(static_cast<size_t>(y) * w + x) * 3];
+      // Radiance's own decoding: the mantissa's bucket centre times 2^(e - 136).
+      float f = rgbe[3] == 0 ? 0.0f : std::ldexp(1.0f, rgbe[3] - (128 + 8));
+      for (int c = 0; c < 3; ++c) o[c] = rgbe[3] == 0 ? 0.0f : (rgbe[c] + 0.5f) * f;
+    }
+  }
+  return img;
+}
+
+ImageF read_hdr_image(const std::string& path) {
+  std::string ext = path.substr(
+      path.find_last_of('.') == std::string::npos ? path.size() : path.find_last_of('.'));
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".exr") return read_exr(path);
+  if (ext == ".hdr" || ext == ".pic") return read_radiance_hdr(path);
+  throw InputError(path + ": not an HDR image (expected .exr, .hdr or .pic)");
+}
+
+}  // namespace rt

@@ -1,0 +1,110 @@
+// The parallel BVH build and the wide collapse: the same tree whatever the thread count,
+// and wide nodes that cover every primitive exactly once inside their parents' boxes.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "bvh_build.h"
+#include "bvh_wide.h"
+
+namespace rt {
+namespace {
+
+std::vector<Aabb> RandomBoxes(int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-100, 100), size(0, 2);
+  std::vector<Aabb> boxes(count);
+  for (auto& b : boxes) {
+    float x = u(rng), y = u(rng), z = u(rng) * 0.01f;  // Mostly flat, like a terrain.
+    b.grow(x, y, z);
+    b.grow(x + size(rng), y + size(rng), z + size(rng));
+  }
+  return boxes;
+}
+
+float Lane(const LaneFloat& v, int i) {
+  float a[RT_BVH_WIDTH];
+  std::memcpy(a, &v, sizeof a);
+  return a[i];
+}
+
+int Lane(const LaneInt& v, int i) {
+  int a[RT_BVH_WIDTH];
+  std::memcpy(a, &v, sizeof a);
+  return a[i];
+}
+
+TEST(BvhBuild, SameTreeForOneAndTwoThreads) {
+  // Large enough for parallel binning of the top levels and many parallel subtrees.
+  std::vector<Aabb> boxes = RandomBoxes(300000, 7);
+  BvhOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  std::vector<BinaryBvhNode> a, b;
+  std::vector<int> order_a, order_b;
+  BvhBuildResult ra = build_bvh(boxes, one, 4, 0, a, order_a);
+  BvhBuildResult rb = build_bvh(boxes, two, 4, 0, b, order_b);
+  EXPECT_EQ(ra.root, rb.root);
+  EXPECT_EQ(ra.depth, rb.depth);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(BinaryBvhNode)), 0);
+  EXPECT_EQ(order_a, order_b);
+}
+
+TEST(BvhWide, CollapseCoversEveryPrimitiveOnceInsideItsBoxes) {
+  for (int count : {1, 3, 5, 1000, 40000}) {
+    SCOPED_TRACE("count " + std::to_string(count));
+    std::vector<Aabb> boxes = RandomBoxes(count, count);
+    std::vector<BinaryBvhNode> binary;
+    std::vector<int> order;
+    BvhBuildResult r = build_bvh(boxes, BvhOptions{}, 4, 10, binary, order);
+    std::vector<BvhNode> wide(2);  // Nodes of an earlier mesh.
+    WideBvhResult w = collapse_bvh(binary, r.root, wide);
+    ASSERT_EQ(w.root, 2);
+    EXPECT_LE(w.depth, r.depth);
+    std::vector<int> covered(count, 0), visits(wide.size(), 0);
+    std::vector<int> stack = {w.root};
+    while (!stack.empty()) {
+      int index = stack.back();
+      stack.pop_back();
+      ASSERT_EQ(++visits[index], 1) << "node reached twice";
+      const BvhNode& n = wide[index];
+      for (int lane = 0; lane < RT_BVH_WIDTH; ++lane) {
+        int child = Lane(n.child, lane);
+        if (child == RT_BVH_EMPTY) continue;
+        float lo[3], hi[3];
+        for (int k = 0; k < 3; ++k)
+          lo[k] = Lane(n.bounds[k], lane), hi[k] = Lane(n.bounds[3 + k], lane);
+        if (child >= 0) {
+          ASSERT_GT(child, index);
+          ASSERT_LT(child, static_cast<int>(wide.size()));
+          for (int l = 0; l < RT_BVH_WIDTH; ++l) {
+            if (Lane(wide[child].child, l) == RT_BVH_EMPTY) continue;
+            for (int k = 0; k < 3; ++k) {
+              EXPECT_LE(lo[k], Lane(wide[child].bounds[k], l));
+              EXPECT_GE(hi[k], Lane(wide[child].bounds[3 + k], l));
+            }
+          }
+          stack.push_back(child);
+          continue;
+        }
+        int first = RtLeafFirst(child) - 10, n_prims = RtLeafCount(child);
+        ASSERT_GE(first, 0);
+        ASSERT_LE(first + n_prims, count);
+        EXPECT_LE(n_prims, 4);
+        for (int i = first; i < first + n_prims; ++i) {
+          ++covered[i];
+          const Aabb& b = boxes[order[i]];
+          for (int k = 0; k < 3; ++k) EXPECT_TRUE(lo[k] <= b.lo[k] && b.hi[k] <= hi[k]);
+        }
+      }
+    }
+    for (int i = 0; i < count; ++i) ASSERT_EQ(covered[i], 1) << "position " << i;
+    for (size_t i = 2; i < wide.size(); ++i) EXPECT_EQ(visits[i], 1) << "orphan " << i;
+  }
+}
+
+}  // namespace
+}  // namespace rt
