@@ -84,6 +84,9 @@ OptionTable<CliOptions> make_raytracer_table() {
       .flag("--stats", RT_FIELD(stats),
             "print the time split (load, BVH build, kernel compile, render), BVH figures, "
             "samples/s, rays/s and the feature bits")
+      .flag("--strict", RT_FIELD(load.strict),
+            "treat every warning about the scene as an error (unknown elements, repeated ids "
+            "that are allowed, skipped degenerate triangles)")
       .flag("--moments", RT_FIELD(moments),
             "also write <image>.moments.exr: per-pixel sample count, mean and variance of the "
             "unclamped radiance, and the first sample's hit (see compare --help and "
@@ -146,11 +149,27 @@ const OptionTable<CliOptions>& raytracer_option_table() {
   return table;
 }
 
-CliOptions parse_cli(int argc, char** argv) {
-  const OptionTable<CliOptions>& table = raytracer_option_table();
+CliOptions parse_arguments(int argc, char** argv, std::string* exit_text) {
   CliOptions o;
-  o.scenes = table.parse_or_exit(argc, argv, &o);
-  if (o.scenes.empty() && !o.list_devices) table.usage_error("no scene file given");
+  std::vector<std::string> scenes = raytracer_option_table().parse(argc, argv, &o, exit_text);
+  if (!exit_text->empty()) return o;
+  o.scenes = scenes;
+  if (o.scenes.empty() && !o.list_devices) throw UsageError("no scene file given");
+  return o;
+}
+
+CliOptions parse_cli(int argc, char** argv) {
+  std::string exit_text;
+  CliOptions o;
+  try {
+    o = parse_arguments(argc, argv, &exit_text);
+  } catch (const UsageError& e) {
+    raytracer_option_table().usage_error(e.what());
+  }
+  if (!exit_text.empty()) {
+    std::fputs(exit_text.c_str(), stdout);
+    std::exit(0);
+  }
   return o;
 }
 

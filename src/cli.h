@@ -33,6 +33,7 @@ struct CliOptions {
   bool skip_existing = false;               // Render only the images whose file does not exist yet.
   int tile_rows = 0;  // MPI: rows of a tile when images are cut (0: automatic).
   RenderOptions render;
+  LoadOptions load;  // --strict
 };
 
 // The options that reach the device: what ends up in the scene header or the OpenCL
@@ -48,5 +49,9 @@ const OptionTable<CliOptions>& raytracer_option_table();
 // Parses argv; on --help / --version prints and exits 0; on a bad option prints one line
 // and exits 2.
 CliOptions parse_cli(int argc, char** argv);
+
+// parse_cli without printing or exiting: throws UsageError for a bad command line and sets
+// *exit_text to what --help or --version print (the command-line fuzzer calls this).
+CliOptions parse_arguments(int argc, char** argv, std::string* exit_text);
 
 }  // namespace rt

@@ -46,7 +46,7 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
 }
 
-// Makes untrusted bytes safe to embed in a one-line message.
+// Makes untrusted bytes safe to embed in a one-line message: a short excerpt, printable ASCII.
 std::string printable(const char* b, const char* e) {
   std::string s;
   for (; b != e && s.size() < 40; ++b) s += (*b >= 32 && *b < 127) ? *b : '?';
@@ -131,9 +131,9 @@ class Parser {
       pos_ = e == end_ ? end_ : e + 1;
       if (e != b && e[-1] == '\r') --e;  // CRLF files
       if (first) {
-        if (std::string(b, e) != "ply") {
-          header_fail("not a PLY file: first line '" + printable(b, e) + "'");
-        }
+        // Nothing of the file is quoted: a scene may name any file (/etc/passwd) as its PLY,
+        // and its first line is none of the message's business.
+        if (std::string(b, e) != "ply") header_fail("not a PLY file (the first line is not 'ply')");
         continue;
       }
       std::istringstream line(std::string(b, e));  // the header is small: iostreams are fine
@@ -338,9 +338,10 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
-PlyMesh read_ply(const std::string& path) {
-  const std::string data = read_file(path);
-  return Parser(path, data).parse();
+PlyMesh read_ply(const std::string& path) { return parse_ply(read_file(path), path); }
+
+PlyMesh parse_ply(const std::string& data, const std::string& name) {
+  return Parser(name, data).parse();
 }
 
 }  // namespace rt

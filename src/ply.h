@@ -20,4 +20,7 @@ struct PlyMesh {
 // bad value.
 PlyMesh read_ply(const std::string& path);
 
+// The same from the file's bytes in memory; `name` stands for the file in messages.
+PlyMesh parse_ply(const std::string& data, const std::string& name);
+
 }  // namespace rt

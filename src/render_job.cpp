@@ -14,6 +14,7 @@
 #include "io/image_output.h"
 #include "io/moments.h"
 #include "io/png_io.h"
+#include "output_check.h"
 
 namespace rt {
 
@@ -21,7 +22,7 @@ JobScene load_job_scene(const std::string& path, const CliOptions& opt, bool pri
   const auto t0 = std::chrono::steady_clock::now();
   JobScene s;
   s.path = path;
-  s.desc = load_scene(path);
+  s.desc = load_scene(path, opt.load);
   s.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (print_warnings && !opt.quiet)
@@ -30,6 +31,7 @@ JobScene load_job_scene(const std::string& path, const CliOptions& opt, bool pri
     throw input_error(path, "Cameras",
                       "no camera " + std::to_string(opt.camera) + " (the file has " +
                           std::to_string(s.desc.cameras.size()) + ")");
+  check_outputs(s.desc, opt.camera, opt.output_dir, opt.moments);
   if (opt.resolution_scale != 1.0)
     for (CameraDesc& cam : s.desc.cameras) {
       // The near plane is untouched, so the view stays the same at a different pixel count.

@@ -31,6 +31,7 @@ namespace rt {
 
 struct CameraDesc {
   std::string image_name;
+  std::string element;  // Where the name was read, for messages: "Cameras > Camera id=1 > ImageName".
   Vec3d position, gaze, up;
   double left = -1, right = 1, bottom = -1, top = 1, near_distance = 1;
   int width = 0, height = 0;
@@ -88,12 +89,23 @@ struct SceneDesc {
   int background_texture = -1;
   int degenerate_triangles = 0;  // Skipped at load time, reported by --stats.
   std::vector<std::string> warnings;
+  std::vector<std::string> inputs;  // Every file read: the scene and its PLY files.
+};
+
+struct LoadOptions {
+  bool strict = false;  // Every warning is an error (--strict).
 };
 
 // Reads a scene file; throws rt::InputError with one line naming the file, the element
 // and the value when the scene cannot be rendered. Warnings (unknown elements, skipped
-// degenerate triangles) are collected in SceneDesc::warnings.
-SceneDesc load_scene(const std::string& path);
+// degenerate triangles) are collected in SceneDesc::warnings, or thrown with `strict`.
+// Unsupported features and duplicates: see scene_schema.h.
+SceneDesc load_scene(const std::string& path, const LoadOptions& options = {});
+
+// The same from XML text in memory; `name` stands for the file in messages and locates
+// relative PLY paths.
+SceneDesc load_scene_text(const std::string& xml, const std::string& name,
+                          const LoadOptions& options = {});
 
 inline float3 to_float3(Vec3d v) {
   return make_float3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));

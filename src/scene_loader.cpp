@@ -2,6 +2,7 @@
 // the course's files) with tinyxml2.
 #include <tinyxml2.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cfloat>
 #include <cmath>
@@ -10,7 +11,6 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
-#include <set>
 #include <sstream>
 
 #include "cl/material/brdf.h"
@@ -18,55 +18,13 @@
 #include "image/read_ldr.h"
 #include "ply.h"
 #include "scene.h"
+#include "scene_schema.h"
+#include "xml_text.h"
 
 namespace rt {
 namespace {
 
 using tinyxml2::XMLElement;
-
-std::string describe(const XMLElement* e) {
-  std::string s = e->Name();
-  if (const char* id = e->Attribute("id")) s += std::string(" id=") + id;
-  return s;
-}
-
-// All the element's text, also where comments split it (<Gaze>0 0 <!-- z --> -1</Gaze>);
-// GetText() would return only the first piece.
-std::string text_of(const XMLElement* e) {
-  std::string s;
-  for (auto* n = e->FirstChild(); n; n = n->NextSibling())
-    if (const auto* t = n->ToText()) s += t->Value();
-  return s;
-}
-
-std::string path_of(const XMLElement* e) {
-  std::string s = describe(e);
-  for (auto* p = e->Parent() ? e->Parent()->ToElement() : nullptr; p;
-       p = p->Parent() ? p->Parent()->ToElement() : nullptr) {
-    if (std::string(p->Name()) == "Scene") break;
-    s = describe(p) + " > " + s;
-  }
-  return s;
-}
-
-// Makes text from the file fit a one-line message: whitespace runs (newlines included)
-// become one space, control characters '?', and long values are cut.
-std::string shorten(const std::string& in) {
-  std::string v;
-  for (char ch : in) {
-    unsigned char c = static_cast<unsigned char>(ch);
-    if (std::isspace(c)) {
-      if (!v.empty() && v.back() != ' ') v += ' ';
-    } else {
-      v += c < 32 || c == 127 ? '?' : ch;
-    }
-  }
-  if (!v.empty() && v.back() == ' ') v.pop_back();
-  if (v.size() > 40) v = v.substr(0, 37) + "...";
-  return v;
-}
-
-std::string shorten(const char* v) { return shorten(std::string(v ? v : "")); }
 
 // A number as the file would write it: 3, -1.5, 1e+30.
 std::string fmt(double v) {
@@ -77,8 +35,12 @@ std::string fmt(double v) {
 
 class Loader {
  public:
-  explicit Loader(std::string file) : file_(std::move(file)) {}
+  Loader(std::string file, const LoadOptions& options)
+      : file_(std::move(file)), options_(options) {}
   SceneDesc load();
+  // Reads the scene from XML text already in memory; `file_` only names it and locates
+  // the PLY files it refers to (the fuzzer feeds scenes this way).
+  SceneDesc load_text(const std::string& xml);
 
  private:
   [[noreturn]] void fail(const XMLElement* e, const std::string& what) const {
@@ -123,10 +85,17 @@ class Loader {
   int vertex_index(const XMLElement* e, double one_based, long offset = 0) const;
   int add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth, bool uvs);
   void warn(const XMLElement* e, const std::string& what) {
-    scene_.warnings.push_back(file_ + ": " + path_of(e) + ": " + what);
+    warn(file_ + ": " + path_of(e) + ": " + what);
   }
+  // With --strict, the first warning ends the load as an error.
+  void warn(const std::string& line) {
+    if (options_.strict) throw InputError(line + " [--strict: warnings are errors]");
+    scene_.warnings.push_back(line);
+  }
+  SceneDesc read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError err);
 
   std::string file_;
+  LoadOptions options_;
   SceneDesc scene_;
   std::map<std::string, int> material_ids_;
   std::map<std::string, Material> brdfs_;   // BRDF id -> the members a BRDF sets.
@@ -256,6 +225,7 @@ void Loader::read_cameras(const XMLElement* scene) {
         image == "." || image == "..")
       fail_value(name, "must be a plain file name");
     cam.image_name = image;
+    cam.element = path_of(name);
     if (const XMLElement* ns = child(c, "NumSamples", false)) {
       double n = number(ns);
       double root = std::round(std::sqrt(n));
@@ -404,9 +374,7 @@ void Loader::read_lights(const XMLElement* scene) {
       s.param1 = static_cast<float>(std::cos(coverage * M_PI / 360.0));
       s.param0 = static_cast<float>(std::cos(falloff * M_PI / 360.0));
       scene_.lights.push_back(s);
-    } else {
-      warn(l, "unknown light type, ignored");
-    }
+    }  // Other kinds were reported by check_scene_structure.
   }
 }
 
@@ -501,9 +469,7 @@ void Loader::read_transformations(const XMLElement* scene) {
         fail(e, "last row '" + fmt(v[12]) + " " + fmt(v[13]) + " " + fmt(v[14]) + " " + fmt(v[15]) +
                     "' must be 0 0 0 1 (only affine transformations are supported)");
       transforms_[std::string("c") + id] = m;
-    } else {
-      warn(e, "unknown transformation, ignored");
-    }
+    }  // Other kinds were reported by check_scene_structure.
   }
 }
 
@@ -569,6 +535,7 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
     if (p.is_relative()) p = std::filesystem::path(file_).parent_path() / p;
     PlyMesh pm;
     try {
+      scene_.inputs.push_back(p.string());
       pm = read_ply(p.string());
     } catch (const InputError& err) {
       // The PLY reader names the PLY file; add the scene file and the element.
@@ -687,8 +654,7 @@ void Loader::read_objects(const XMLElement* scene) {
           transform_of(e) * Mat4::translation(centre) * Mat4::scaling({radius, radius, radius});
       o.motion = motion_of(e);
     } else {
-      warn(e, "unknown object type, ignored");
-      continue;
+      continue;  // Reported by check_scene_structure.
     }
     // Each factor was checked, but a product (radius 1e-120, a chain of instances) can
     // still underflow to a singular matrix, which the devices cannot invert.
@@ -758,6 +724,7 @@ TextureMapDesc Loader::read_texture_map(const XMLElement* e,
       std::filesystem::path path(it->second);
       if (path.is_relative()) path = std::filesystem::path(file_).parent_path() / path;
       try {
+        scene_.inputs.push_back(path.string());
         scene_.images.push_back(read_ldr(path.string()));
       } catch (const std::exception& err) {
         fail(ie, std::string("image ") + err.what());
@@ -850,6 +817,16 @@ SceneDesc Loader::load() {
     throw input_error(file_, "file",
                       std::filesystem::is_directory(file_, ec) ? "is a directory, not a scene file"
                                                                : "cannot read");
+  scene_.inputs.push_back(file_);
+  return read_document(doc, err);
+}
+
+SceneDesc Loader::load_text(const std::string& xml) {
+  tinyxml2::XMLDocument doc;
+  return read_document(doc, doc.Parse(xml.data(), xml.size()));
+}
+
+SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError err) {
   if (err == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)
     throw input_error(file_, "XML", "empty document: no <Scene> element");
   if (err != tinyxml2::XML_SUCCESS) {
@@ -864,21 +841,8 @@ SceneDesc Loader::load() {
   const XMLElement* scene = doc.FirstChildElement("Scene");
   if (!scene) throw input_error(file_, "XML", "no <Scene> root element");
   scene_.file = file_;
-  static const std::set<std::string> known = {"BackgroundColor",
-                                              "ShadowRayEpsilon",
-                                              "IntersectionTestEpsilon",
-                                              "MaxRecursionDepth",
-                                              "Camera",
-                                              "Cameras",
-                                              "Lights",
-                                              "Materials",
-                                              "Transformations",
-                                              "VertexData",
-                                              "TexCoordData",
-                                              "Textures",
-                                              "Objects"};
-  for (auto* e = scene->FirstChildElement(); e; e = e->NextSiblingElement())
-    if (!known.count(e->Name())) warn(e, "unknown element, ignored");
+  // Structure first (unsupported features, repeats, unknown elements), then the values.
+  for (const std::string& w : check_scene_structure(doc, file_)) warn(w);
   scene_.background = child_vec3(scene, "BackgroundColor", {});
   scene_.shadow_epsilon = child_number(scene, "ShadowRayEpsilon", 1e-3);
   if (scene_.shadow_epsilon < 0)
@@ -903,14 +867,20 @@ SceneDesc Loader::load() {
   read_objects(scene);
   check_texture_coordinates();
   if (scene_.degenerate_triangles > 0)
-    scene_.warnings.push_back(file_ + ": Objects: skipped " +
-                              std::to_string(scene_.degenerate_triangles) +
-                              " degenerate triangles");
+    warn(file_ + ": Objects: skipped " + std::to_string(scene_.degenerate_triangles) +
+         " degenerate triangles");
   return std::move(scene_);
 }
 
 }  // namespace
 
-SceneDesc load_scene(const std::string& path) { return Loader(path).load(); }
+SceneDesc load_scene(const std::string& path, const LoadOptions& options) {
+  return Loader(path, options).load();
+}
+
+SceneDesc load_scene_text(const std::string& xml, const std::string& name,
+                          const LoadOptions& options) {
+  return Loader(name, options).load_text(xml);
+}
 
 }  // namespace rt

@@ -1,0 +1,92 @@
+#include "fuzz/targets.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+#include "errors.h"
+#include "flat_scene.h"
+#include "ply.h"
+#include "scene.h"
+
+namespace rt {
+namespace {
+
+// A folder with a quad as m.ply, made once per process and removed at its end, so fuzzed
+// scenes reach the PLY path of the loader through plyFile="m.ply".
+struct SceneFolder {
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("rt-fuzz-" + std::to_string(getpid()));
+  SceneFolder() {
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "m.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                    "property float y\nproperty float z\nelement face 1\n"
+                                    "property list uchar int vertex_indices\nend_header\n"
+                                    "0 0 -2\n1 0 -2\n1 1 -2\n0 1 -2\n4 0 1 2 3\n";
+  }
+  ~SceneFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
+
+std::string scene_folder() {
+  static const SceneFolder folder;
+  return folder.dir.string();
+}
+
+}  // namespace
+
+void fuzz_scene(const uint8_t* data, size_t size) {
+  SceneDesc scene;
+  try {
+    scene = load_scene_text(std::string(reinterpret_cast<const char*>(data), size),
+                            scene_folder() + "/fuzz.xml");
+  } catch (const InputError&) {
+    return;  // Refused with a message: the expected outcome for most inputs.
+  }
+  RenderOptions options;
+  FlatScene flat = flatten_scene(scene, options);
+  for (int c = 0; c < static_cast<int>(scene.cameras.size()); ++c)
+    set_camera(flat, scene, c, options);
+}
+
+void fuzz_ply(const uint8_t* data, size_t size) {
+  try {
+    parse_ply(std::string(reinterpret_cast<const char*>(data), size), "fuzz.ply");
+  } catch (const InputError&) {
+  }
+}
+
+void fuzz_cli(const uint8_t* data, size_t size) {
+  std::vector<std::string> args{"raytracer"};
+  std::string arg;
+  for (size_t i = 0; i < size; ++i) {
+    if (data[i] == 0) {
+      args.push_back(arg);
+      arg.clear();
+    } else {
+      arg += static_cast<char>(data[i]);
+    }
+  }
+  if (!arg.empty()) args.push_back(arg);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::string exit_text;
+  try {
+    CliOptions o = parse_arguments(static_cast<int>(args.size()), argv.data(), &exit_text);
+    // A command line that parses names a scene to render (or only lists devices).
+    if (exit_text.empty() && o.scenes.empty() && !o.list_devices)
+      throw std::logic_error("no scene, yet accepted");
+  } catch (const UsageError& e) {
+    if (std::string(e.what()).empty()) throw std::logic_error("a usage error without a message");
+  }
+}
+
+}  // namespace rt
