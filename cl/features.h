@@ -23,7 +23,8 @@
 #define RT_FEATURE_DIRECTIONAL_LIGHTS (1 << 14)  // DirectionalLight.
 #define RT_FEATURE_SPOT_LIGHTS (1 << 15)         // SpotLight.
 #define RT_FEATURE_BRDF (1 << 16)  // A material with a BRDF other than the original Blinn-Phong.
-#define RT_FEATURE_ALL ((1 << 17) - 1)
+#define RT_FEATURE_ENVIRONMENT_LIGHT (1 << 17)  // SphericalDirectionalLight (an HDR environment).
+#define RT_FEATURE_ALL ((1 << 18) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in
@@ -32,6 +33,7 @@
 #define RT_LIGHT_AREA RT_FEATURE_AREA_LIGHTS
 #define RT_LIGHT_DIRECTIONAL RT_FEATURE_DIRECTIONAL_LIGHTS
 #define RT_LIGHT_SPOT RT_FEATURE_SPOT_LIGHTS
+#define RT_LIGHT_ENVIRONMENT RT_FEATURE_ENVIRONMENT_LIGHT
 #define RT_MATERIAL_PLAIN 0
 #define RT_MATERIAL_MIRROR RT_FEATURE_MIRROR
 #define RT_MATERIAL_CONDUCTOR RT_FEATURE_CONDUCTOR

@@ -45,14 +45,19 @@ typedef struct Light {
   float area;  // Area: |edge1 x edge2|.
   // Type-specific scalars. Directional: param0, a length longer than the scene's
   // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
-  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing.
+  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing. Environment:
+  // param0 as for directional lights; param1, param2 = the map's width and height (whole
+  // numbers); area = the integral its importance-sampling density was built from (0: the
+  // map is black and sends nothing).
   float param0, param1, param2;
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;
   int type;
-  int index;  // Type-specific index (for example a texture or an emitting instance).
-  int pad0;
+  // Type-specific index (for example a texture or an emitting instance). Environment: its
+  // mapping, RT_ENV_LATLONG or RT_ENV_PROBE (cl/light/environment_map.h).
+  int index;
+  int variant;  // Type-specific choice. Environment: how it is sampled (RT_ENV_SAMPLE_*).
 } Light;
 
 #define RT_LENS_SQUARE 0
@@ -143,6 +148,7 @@ typedef struct SceneHeader {
   int filter;
   float filter_sigma;  // Gaussian filter's standard deviation, in pixels.
   int flags;
+  int environment;  // Index in the lights of the environment light (at most one), or -1.
 } SceneHeader;
 
 // The arrays of one scene, passed by pointer to every stage (compare Cycles'

@@ -62,6 +62,14 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
 // flat.textures (src/flat_textures.cpp).
 void flatten_textures(const SceneDesc& scene, FlatScene& flat);
 
+// Places the environment light's map and its sampling distributions in flat's arrays and
+// sets the light's sizes and the header's index (src/flat_environment.cpp).
+void flatten_environment(const SceneDesc& scene, FlatScene& flat);
+
+// The function importance sampling follows over `map`'s texels (row-major): luminance times
+// the solid angle per unit map area at the texel's centre (cl/light/environment_map.h).
+std::vector<double> environment_importance(const ImageF& map, int mapping);
+
 // The feature bits the scene needs for `camera` (cl/features.h).
 int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options);
 

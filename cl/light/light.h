@@ -8,6 +8,7 @@
 #include "../sampler.h"
 #include "area.h"
 #include "directional.h"
+#include "environment.h"
 #include "point.h"
 #include "spot.h"
 
@@ -26,6 +27,8 @@ RT_DEVICE LightSample SampleLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL cons
   if (RT_HAS(sd, RT_LIGHT_DIRECTIONAL) && light->type == RT_LIGHT_DIRECTIONAL)
     return SampleDirectionalLight(light, ctx);
   if (RT_HAS(sd, RT_LIGHT_SPOT) && light->type == RT_LIGHT_SPOT) return SampleSpotLight(light, ctx);
+  if (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && light->type == RT_LIGHT_ENVIRONMENT)
+    return SampleEnvironmentLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   LightSample none = LightSampleTowards(ctx->p, ctx->p, Vec3(0.0f));  // Not valid.
   return none;
 }

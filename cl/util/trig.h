@@ -39,4 +39,22 @@ RT_DEVICE float AcosF(float c) {
   return Atan2F(sqrt((1.0f - c) * (1.0f + c)), c);
 }
 
+// sin(2 pi t) and cos(2 pi t) for any t, from the same operations on both devices (library
+// sin and cos, like atan2, differ in the last bit between OpenCL implementations and
+// glibc). t is reduced to a quarter turn q and a remainder a in [-pi/4, pi/4], where the
+// Cephes sinf/cosf polynomials are accurate to about one float ulp; q rotates the pair.
+RT_DEVICE void SinCos2Pi(float t, RT_PRIVATE float* s, RT_PRIVATE float* c) {
+  float x = 4.0f * (t - floor(t));  // Quarter turns, in [0, 4].
+  float q = floor(x + 0.5f);
+  float a = (x - q) * (RT_PI * 0.5f);
+  float z = a * a;
+  float sa = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * a + a;
+  float ca =
+      ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+      0.5f * z + 1.0f;
+  int quarter = ((int)q) & 3;
+  *s = quarter == 0 ? sa : (quarter == 1 ? ca : (quarter == 2 ? -sa : -ca));
+  *c = quarter == 0 ? ca : (quarter == 1 ? -sa : (quarter == 2 ? -ca : sa));
+}
+
 #endif  // RT_UTIL_TRIG_H
