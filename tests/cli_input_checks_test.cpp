@@ -113,16 +113,14 @@ TEST_F(CliInputChecks, NameTooLongForTheFileSystemRefusedBeforeRendering) {
 
 TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
   const std::pair<const char*, const char*> cases[] = {
-      {"<AmbientLight>25 25 25</AmbientLight>",
-       "<AmbientLight>25 25 25</AmbientLight><SphericalDirectionalLight id=\"1\"><ImageId>1"
-       "</ImageId></SphericalDirectionalLight>"},
+      {"<Objects>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><Objects>"},
       {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
       {"</Objects>",
        "<LightSphere id=\"2\"><Material>1</Material><Center>1</Center><Radius>1"
        "</Radius><Radiance>1 1 1</Radiance></LightSphere></Objects>"},
       {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
   };
-  const char* names[] = {"SphericalDirectionalLight", "handedness", "LightSphere", "Renderer"};
+  const char* names[] = {"ZeroBasedIndexing", "handedness", "LightSphere", "Renderer"};
   for (int i = 0; i < 4; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);
