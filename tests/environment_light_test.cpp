@@ -22,17 +22,21 @@ float3 V(float x, float y, float z) { return make_float3(x, y, z); }
 
 // ---- Mappings: exact texels of known directions ----
 
-TEST(EnvironmentMap, LatLongOfKnownDirections) {
-  struct Case {
-    float3 d;
-    float u, v;
-  } cases[] = {{V(0, 0, -1), 0.5f, 0.5f}, {V(1, 0, 0), 0.75f, 0.5f}, {V(-1, 0, 0), 0.25f, 0.5f},
-               {V(0, 1, 0), 0.5f, 0.0f},  {V(0, -1, 0), 0.5f, 1.0f}, {V(0, 0, 1), 1.0f, 0.5f}};
-  for (const Case& c : cases) {
-    float2 uv = EnvDirectionToUV(RT_ENV_LATLONG, c.d);
-    EXPECT_FLOAT_EQ(uv.x, c.u) << c.d.x << " " << c.d.y << " " << c.d.z;
-    EXPECT_FLOAT_EQ(uv.y, c.v) << c.d.x << " " << c.d.y << " " << c.d.z;
+// The six axis directions under `mapping`, at their (u, v), in the order -z, +x, -x, +y, -y, +z.
+void ExpectAxes(int mapping, const float (&uv)[6][2]) {
+  const float3 axes[6] = {V(0, 0, -1), V(1, 0, 0),  V(-1, 0, 0),
+                          V(0, 1, 0),  V(0, -1, 0), V(0, 0, 1)};
+  for (int i = 0; i < 6; ++i) {
+    float2 got = EnvDirectionToUV(mapping, axes[i]);
+    EXPECT_FLOAT_EQ(got.x, uv[i][0]) << "mapping " << mapping << ", axis " << i;
+    EXPECT_FLOAT_EQ(got.y, uv[i][1]) << "mapping " << mapping << ", axis " << i;
   }
+}
+
+TEST(EnvironmentMap, LatLongOfKnownDirections) {
+  ExpectAxes(
+      RT_ENV_LATLONG,
+      {{0.5f, 0.5f}, {0.75f, 0.5f}, {0.25f, 0.5f}, {0.5f, 0.0f}, {0.5f, 1.0f}, {1.0f, 0.5f}});
   // An 8 x 4 map: +x is column 6 of row 2; straight up is row 0, straight down row 3.
   EXPECT_EQ(EnvTexelIndex(EnvDirectionToUV(RT_ENV_LATLONG, V(1, 0, 0)), 8, 4), 2 * 8 + 6);
   EXPECT_EQ(EnvTexelIndex(EnvDirectionToUV(RT_ENV_LATLONG, V(0, 1, 0)), 8, 4), 0 * 8 + 4);
@@ -45,16 +49,9 @@ TEST(EnvironmentMap, LatLongOfKnownDirections) {
 }
 
 TEST(EnvironmentMap, ProbeOfKnownDirections) {
-  struct Case {
-    float3 d;
-    float u, v;
-  } cases[] = {{V(0, 0, -1), 0.5f, 0.5f}, {V(1, 0, 0), 0.75f, 0.5f},  {V(-1, 0, 0), 0.25f, 0.5f},
-               {V(0, 1, 0), 0.5f, 0.25f}, {V(0, -1, 0), 0.5f, 0.75f}, {V(0, 0, 1), 1.0f, 0.5f}};
-  for (const Case& c : cases) {
-    float2 uv = EnvDirectionToUV(RT_ENV_PROBE, c.d);
-    EXPECT_FLOAT_EQ(uv.x, c.u) << c.d.x << " " << c.d.y << " " << c.d.z;
-    EXPECT_FLOAT_EQ(uv.y, c.v) << c.d.x << " " << c.d.y << " " << c.d.z;
-  }
+  ExpectAxes(
+      RT_ENV_PROBE,
+      {{0.5f, 0.5f}, {0.75f, 0.5f}, {0.25f, 0.5f}, {0.5f, 0.25f}, {0.5f, 0.75f}, {1.0f, 0.5f}});
   // A 4 x 4 probe: straight ahead is the corner shared by texels (1,1)..(2,2): (2, 2).
   EXPECT_EQ(EnvTexelIndex(EnvDirectionToUV(RT_ENV_PROBE, V(0, 0, -1)), 4, 4), 2 * 4 + 2);
   EXPECT_EQ(EnvTexelIndex(EnvDirectionToUV(RT_ENV_PROBE, V(0, 1, 0)), 4, 4), 1 * 4 + 2);
