@@ -25,8 +25,8 @@ typedef struct Material {
   float absorption_index;  // Imaginary part of a conductor's index (AbsorptionIndex).
   float roughness;
   int type;
-  int unlit;       // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
-  int brdf;        // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
+  int unlit;  // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
+  int brdf;   // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
   int brdf_flags;  // RT_BRDF_NORMALIZED, RT_BRDF_KD_FRESNEL.
 } Material;
 
@@ -40,15 +40,17 @@ typedef struct Light {
   // Area: unit normal (the light emits from both faces). Directional: the unit direction
   // the light travels in. Spot: the unit axis of its cone.
   float3 normal;
-  // Point, spot: intensity (power per unit solid angle). Area, directional: radiance.
+  // Point, spot: intensity (power per unit solid angle). Area, directional, mesh, sphere:
+  // radiance.
   float3 emission;
-  float area;  // Area: |edge1 x edge2|.
+  float area;  // Area: |edge1 x edge2|. Mesh light: its world-space area.
   // Type-specific scalars. Directional: param0, a length longer than the scene's
   // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
-  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing. Environment:
-  // param0 as for directional lights; param1, param2 = the map's width and height (whole
-  // numbers); area = the integral its importance-sampling density was built from (0: the
-  // map is black and sends nothing).
+  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing. Sphere light:
+  // param0 = |det| of the instance's object-to-world transform (its volume scale).
+  // Environment: param0 as for directional lights; param1, param2 = the map's width and
+  // height (whole numbers); area = the integral its importance-sampling density was built
+  // from (0: the map is black and sends nothing).
   float param0, param1, param2;
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
@@ -57,7 +59,13 @@ typedef struct Light {
   // Type-specific index (for example a texture or an emitting instance). Environment: its
   // mapping, RT_ENV_LATLONG or RT_ENV_PROBE (cl/light/environment_map.h).
   int index;
+  // Mesh light: its triangles are triangles[first .. first + count - 1], and
+  // light_cdf[cdf .. cdf + count - 1] their cumulative world-space areas over `area`.
+  int first;
+  int count;
+  int cdf;
   int variant;  // Type-specific choice. Environment: how it is sampled (RT_ENV_SAMPLE_*).
+  int pad1;
 } Light;
 
 #define RT_LENS_SQUARE 0

@@ -70,6 +70,13 @@ void flatten_environment(const SceneDesc& scene, FlatScene& flat);
 // the solid angle per unit map area at the texel's centre (cl/light/environment_map.h).
 std::vector<double> environment_importance(const ImageF& map, int mapping);
 
+// Appends a light to flat.lights for every emitting object (LightMesh, LightSphere) and
+// fills flat.instance_lights and flat.light_cdf (src/flat_object_lights.cpp).
+// instance_of_object[i] is object i's index in flat.instances (-1: no instance, an empty
+// mesh); mesh_first[m] is the index of mesh m's first triangle in flat.triangles.
+void flatten_object_lights(const SceneDesc& scene, const std::vector<int>& instance_of_object,
+                           const std::vector<int>& mesh_first, FlatScene& flat);
+
 // The feature bits the scene needs for `camera` (cl/features.h).
 int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options);
 

@@ -115,12 +115,10 @@ TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
   const std::pair<const char*, const char*> cases[] = {
       {"<Objects>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><Objects>"},
       {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
-      {"</Objects>",
-       "<LightSphere id=\"2\"><Material>1</Material><Center>1</Center><Radius>1"
-       "</Radius><Radiance>1 1 1</Radiance></LightSphere></Objects>"},
+      {"<Faces>", "<Faces binaryFile=\"faces.bin\">"},
       {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
   };
-  const char* names[] = {"ZeroBasedIndexing", "handedness", "LightSphere", "Renderer"};
+  const char* names[] = {"ZeroBasedIndexing", "handedness", "binaryFile", "Renderer"};
   for (int i = 0; i < 4; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);
