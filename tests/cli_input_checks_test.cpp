@@ -115,7 +115,7 @@ TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
   const std::pair<const char*, const char*> cases[] = {
       {"<Objects>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><Objects>"},
       {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
-      {"<Faces>", "<Faces binaryFile=\"faces.bin\">"},
+      {"<VertexData>", "<VertexData binaryFile=\"vertices.bin\">"},
       {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
   };
   const char* names[] = {"ZeroBasedIndexing", "handedness", "binaryFile", "Renderer"};
