@@ -19,13 +19,14 @@
 #define RT_FEATURE_DEPTH_OF_FIELD (1 << 10)  // ApertureSize > 0.
 #define RT_FEATURE_MOTION_BLUR (1 << 11)     // MotionBlur on any object.
 #define RT_FEATURE_MULTISAMPLE (1 << 12)     // More than one sample per pixel: jittered.
-#define RT_FEATURE_TEXTURES (1 << 13)        // Textures: images, Perlin, checkerboard, bump/normal maps.
+#define RT_FEATURE_TEXTURES (1 << 13)  // Textures: images, Perlin, checkerboard, bump/normal maps.
 #define RT_FEATURE_DIRECTIONAL_LIGHTS (1 << 14)  // DirectionalLight.
 #define RT_FEATURE_SPOT_LIGHTS (1 << 15)         // SpotLight.
 #define RT_FEATURE_BRDF (1 << 16)  // A material with a BRDF other than the original Blinn-Phong.
 #define RT_FEATURE_MESH_LIGHTS (1 << 17)    // LightMesh: an emitting triangle mesh (hw6).
 #define RT_FEATURE_SPHERE_LIGHTS (1 << 18)  // LightSphere: an emitting sphere or ellipsoid (hw6).
-#define RT_FEATURE_ALL ((1 << 19) - 1)
+#define RT_FEATURE_ENVIRONMENT_LIGHT (1 << 19)  // SphericalDirectionalLight (an HDR environment).
+#define RT_FEATURE_ALL ((1 << 20) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in
@@ -38,6 +39,7 @@
 #define RT_LIGHT_SPHERE RT_FEATURE_SPHERE_LIGHTS
 // Either kind of object light: geometry that emits, found by a ray (cl/light/emission.h).
 #define RT_FEATURE_OBJECT_LIGHTS (RT_FEATURE_MESH_LIGHTS | RT_FEATURE_SPHERE_LIGHTS)
+#define RT_LIGHT_ENVIRONMENT RT_FEATURE_ENVIRONMENT_LIGHT
 #define RT_MATERIAL_PLAIN 0
 #define RT_MATERIAL_MIRROR RT_FEATURE_MIRROR
 #define RT_MATERIAL_CONDUCTOR RT_FEATURE_CONDUCTOR

@@ -25,8 +25,8 @@ typedef struct Material {
   float absorption_index;  // Imaginary part of a conductor's index (AbsorptionIndex).
   float roughness;
   int type;
-  int unlit;       // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
-  int brdf;        // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
+  int unlit;  // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
+  int brdf;   // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
   int brdf_flags;  // RT_BRDF_NORMALIZED, RT_BRDF_KD_FRESNEL.
 } Material;
 
@@ -48,18 +48,24 @@ typedef struct Light {
   // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
   // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing. Sphere light:
   // param0 = |det| of the instance's object-to-world transform (its volume scale).
+  // Environment: param0 as for directional lights; param1, param2 = the map's width and
+  // height (whole numbers); area = the integral its importance-sampling density was built
+  // from (0: the map is black and sends nothing).
   float param0, param1, param2;
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;
   int type;
-  int index;  // Type-specific index (for example a texture or an emitting instance).
+  // Type-specific index (for example a texture or an emitting instance). Environment: its
+  // mapping, RT_ENV_LATLONG or RT_ENV_PROBE (cl/light/environment_map.h).
+  int index;
   // Mesh light: its triangles are triangles[first .. first + count - 1], and
   // light_cdf[cdf .. cdf + count - 1] their cumulative world-space areas over `area`.
   int first;
   int count;
   int cdf;
-  int pad0, pad1;
+  int variant;  // Type-specific choice. Environment: how it is sampled (RT_ENV_SAMPLE_*).
+  int pad1;
 } Light;
 
 #define RT_LENS_SQUARE 0
@@ -153,6 +159,7 @@ typedef struct SceneHeader {
   int filter;
   float filter_sigma;  // Gaussian filter's standard deviation, in pixels.
   int flags;
+  int environment;  // Index in the lights of the environment light (at most one), or -1.
 } SceneHeader;
 
 // The arrays of one scene, passed by pointer to every stage (compare Cycles'

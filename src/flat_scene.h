@@ -63,6 +63,14 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
 // flat.textures (src/flat_textures.cpp).
 void flatten_textures(const SceneDesc& scene, FlatScene& flat);
 
+// Places the environment light's map and its sampling distributions in flat's arrays and
+// sets the light's sizes and the header's index (src/flat_environment.cpp).
+void flatten_environment(const SceneDesc& scene, FlatScene& flat);
+
+// The function importance sampling follows over `map`'s texels (row-major): luminance times
+// the solid angle per unit map area at the texel's centre (cl/light/environment_map.h).
+std::vector<double> environment_importance(const ImageF& map, int mapping);
+
 // Appends a light to flat.lights for every emitting object (LightMesh, LightSphere) and
 // fills flat.instance_lights and flat.light_cdf (src/flat_object_lights.cpp).
 // instance_of_object[i] is object i's index in flat.instances (-1: no instance, an empty

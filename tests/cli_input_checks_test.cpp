@@ -113,14 +113,12 @@ TEST_F(CliInputChecks, NameTooLongForTheFileSystemRefusedBeforeRendering) {
 
 TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
   const std::pair<const char*, const char*> cases[] = {
-      {"<AmbientLight>25 25 25</AmbientLight>",
-       "<AmbientLight>25 25 25</AmbientLight><SphericalDirectionalLight id=\"1\"><ImageId>1"
-       "</ImageId></SphericalDirectionalLight>"},
+      {"<Objects>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><Objects>"},
       {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
       {"<VertexData>", "<VertexData binaryFile=\"vertices.bin\">"},
       {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
   };
-  const char* names[] = {"SphericalDirectionalLight", "handedness", "binaryFile", "Renderer"};
+  const char* names[] = {"ZeroBasedIndexing", "handedness", "binaryFile", "Renderer"};
   for (int i = 0; i < 4; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);

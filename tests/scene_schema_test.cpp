@@ -54,11 +54,10 @@ std::string error_of(const std::string& xml, bool strict = false) {
 }
 
 TEST(SceneSchema, UnsupportedElementsAndAttributeValuesAreErrors) {
-  EXPECT_NE(error_of(with("</Lights>",
-                          "<SphericalDirectionalLight id=\"2\"><ImageId>1</ImageId>"
-                          "</SphericalDirectionalLight></Lights>"))
-                .find("s.xml: Lights > SphericalDirectionalLight id=2: not supported (line 5)"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(with("<VertexData>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><VertexData>"))
+          .find("s.xml: ZeroBasedIndexing: not supported (line"),
+      std::string::npos);
   EXPECT_NE(error_of(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"))
                 .find("handedness=\"left\" (line 2) is not supported: the image would be mirrored"),
             std::string::npos);

@@ -27,6 +27,24 @@ RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 no
   info->normal = normal;
 }
 
+// Whether a ray of the tree at `depth` that leaves the scene sees anything: every ray sees
+// the environment light (the course's mirror and glass spheres reflect and refract it);
+// only camera rays see the background, unless --background-on-secondary-miss.
+RT_DEVICE int EscapedRaySees(RT_PRIVATE const SceneData* sd, int depth) {
+  RT_GLOBAL const SceneHeader* h = sd->header;
+  return (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && h->environment >= 0) || depth == 0 ||
+         (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0;
+}
+
+// What such a ray sees: the environment light, else the background.
+RT_DEVICE float3 EscapedRadiance(RT_PRIVATE const SceneData* sd, float3 direction,
+                                 float2 pixel_uv) {
+  RT_GLOBAL const SceneHeader* h = sd->header;
+  if (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && h->environment >= 0)
+    return EnvironmentRadiance(sd, &sd->lights[h->environment], direction);
+  return Background(sd, pixel_uv);
+}
+
 // Radiance along a camera ray through the film at pixel_uv (where a background texture is
 // looked up); *rays counts every ray cast (camera, secondary, shadow).
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
@@ -50,8 +68,8 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
     *rays += 1u;
     int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && task.depth == 0;
     if (!IntersectClosest(sd, task.ray, cull, &hit)) {
-      if (task.depth == 0 || (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0)
-        radiance += task.weight * Background(sd, pixel_uv);
+      if (EscapedRaySees(sd, task.depth))
+        radiance += task.weight * EscapedRadiance(sd, task.ray.direction, pixel_uv);
       continue;
     }
     SurfacePoint s = ComputeSurface(sd, task.ray, hit);
