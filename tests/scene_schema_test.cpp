@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "scene.h"
 #include "scene_schema.h"
+#include "support/test_scene.h"
 
 namespace rt {
 namespace {
@@ -30,10 +31,7 @@ const std::string kScene = R"(<Scene>
 )";
 
 std::string with(const std::string& from, const std::string& to) {
-  std::string s = kScene;
-  const size_t at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? s : s.replace(at, from.size(), to);
+  return test::replaced(kScene, from, to);
 }
 
 SceneDesc load(const std::string& xml, bool strict = false) {
