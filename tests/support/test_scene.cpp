@@ -105,19 +105,37 @@ std::string slurp(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-std::string expect_load_error(const std::string& path, std::initializer_list<std::string> parts) {
+namespace {
+
+// Runs `load`, expecting an InputError of one line that starts with "name: " and contains
+// every one of `parts`; returns its message.
+template <class Load>
+std::string expect_error_of(const Load& load, const std::string& name,
+                            std::initializer_list<std::string> parts) {
   try {
-    SceneDesc s = load_scene(path);
+    SceneDesc s = load();
     ADD_FAILURE() << "loaded without error (" << s.cameras.size() << " cameras)";
     return "";
   } catch (const InputError& e) {
     std::string msg = e.what();
     EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
-    EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << "does not start with the file: " << msg;
+    EXPECT_EQ(msg.rfind(name + ": ", 0), 0u) << "does not start with the file: " << msg;
     for (const auto& part : parts)
       EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' missing in: " << msg;
     return msg;
   }
+}
+
+}  // namespace
+
+std::string expect_load_error(const std::string& path, std::initializer_list<std::string> parts) {
+  return expect_error_of([&] { return load_scene(path); }, path, parts);
+}
+
+std::string expect_load_text_error(const std::string& xml, const std::string& name,
+                                   std::initializer_list<std::string> parts,
+                                   const LoadOptions& options) {
+  return expect_error_of([&] { return load_scene_text(xml, name, options); }, name, parts);
 }
 
 void TempDirTest::SetUp() {

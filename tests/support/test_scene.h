@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "scene.h"
+
 namespace rt::test {
 
 // A tiny scene (16 x 8 pixels, a two-triangle mesh, a triangle and a sphere, one point light,
@@ -38,6 +40,10 @@ std::string slurp(const std::filesystem::path& p);
 // Loads the scene at `path`, expecting an rt::InputError of one line that starts with the
 // file's path and contains every one of `parts`; returns the message ("" when none).
 std::string expect_load_error(const std::string& path, std::initializer_list<std::string> parts);
+// The same for scene text `xml` loaded under the name `name`.
+std::string expect_load_text_error(const std::string& xml, const std::string& name,
+                                   std::initializer_list<std::string> parts,
+                                   const LoadOptions& options = {});
 
 // A fixture with a fresh temporary directory per test, removed afterwards.
 class TempDirTest : public ::testing::Test {
