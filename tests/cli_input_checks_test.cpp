@@ -202,11 +202,7 @@ TEST_F(CliInputChecks, RepeatedIdOfAMaterialIsAnErrorOfASphereAWarning) {
 
 TEST_F(CliInputChecks, ForeignPlyFileIsNotQuoted) {
   write("secret.txt", "root:SECRET-HASH:0:0:root:/root:/bin/bash\nmore\n");
-  std::string scene =
-      write("s.xml",
-            replaced(kScene,
-                     "<Faces>\n                3 1 2\n                1 3 4\n            </Faces>",
-                     "<Faces plyFile=\"secret.txt\"/>"));
+  std::string scene = write("s.xml", tiny_scene_with_ply_mesh("secret.txt"));
   Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);
