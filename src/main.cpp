@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "cli.h"
 #include "device/cl/cl_platform.h"
@@ -46,7 +48,12 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
   }
   // Every image's memory is checked before the first render starts.
   for (int c : cameras) {
-    rt::set_camera(flat, s.desc, c, opt.render);
+    try {
+      rt::set_camera(flat, s.desc, c, opt.render);  // Also checks the camera's frame.
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(s.path + ": Cameras > Camera " + std::to_string(c) + ": " +
+                               e.what());
+    }
     const Camera& fc = flat.header.camera;
     try {
       device->check_memory(

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "bvh_wide.h"
 
@@ -36,6 +37,14 @@ Aabb transformed_box(const Aabb& b, const Mat4& m, Vec3d motion) {
 }
 
 bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+bool finite_rows(const float4 rows[3]) {
+  for (int r = 0; r < 3; ++r)
+    if (!std::isfinite(rows[r].x) || !std::isfinite(rows[r].y) || !std::isfinite(rows[r].z) ||
+        !std::isfinite(rows[r].w))
+      return false;
+  return true;
+}
 
 // A directional light's shadow segment runs from the shading point towards the light for
 // `distance`: twice the diagonal of the box around every object (at least 1) leaves the box
@@ -116,6 +125,12 @@ Mat4 object_to_frame(const ObjectDesc& object, Vec3d mesh_origin, Vec3d world_or
 void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const RenderOptions& options) {
   f.world_origin = origin;
   f.lights = tagged_lights(scene, origin);
+  for (size_t i = 0; i < f.lights.size(); ++i) {
+    const float3 p = f.lights[i].position;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::invalid_argument("Lights: light " + std::to_string(i + 1) +
+                                  " lies beyond float range from the camera");
+  }
   f.nodes.resize(f.blas_nodes);  // The bottom levels stay; the top level is rebuilt.
   // Top level: one leaf per instance, boxes covering the whole shutter interval.
   std::vector<Instance> unordered;
@@ -136,6 +151,11 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
     if (!ok) throw std::invalid_argument(o.element + ": singular transform");
     set_rows(inst.world_to_object, inv);
     set_rows(inst.object_to_world, to_frame);
+    // Each position fits float alone (the loader's check), but two far apart need not fit
+    // as a difference: an object 3e38 on one side of the camera and the camera 3e38 on the
+    // other.
+    if (!finite_rows(inst.object_to_world) || !finite_rows(inst.world_to_object))
+      throw std::invalid_argument(o.element + ": lies beyond float range from the camera");
     inst.motion = to_float3(o.motion);
     inst.texture_origin = to_float3(sphere ? origin : mesh->origin);
     inst.kind = sphere ? RT_INSTANCE_SPHERE : RT_INSTANCE_MESH;

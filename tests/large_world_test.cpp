@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -233,6 +234,28 @@ TEST(LargeWorld, AreaLightTouchingASurfaceLeaksTheSameEverywhere) {
         if (lift > 0 && lift < 1e-4) EXPECT_LT(leak, 0.3) << lift;
       }
     }
+  }
+}
+
+// Every position fits float on its own (the loader's limit), but an object 3e38 on one
+// side of the camera and the camera 3e38 on the other do not fit as a difference: the
+// camera's frame is refused with the object's name rather than rendered with infinities.
+TEST(LargeWorld, ObjectBeyondFloatRangeFromTheCameraIsRefused) {
+  Builder b;
+  int m = b.material(Plain(Gray(0.5)));
+  b.sphere(V(3e38, 0, 0), 1, m);
+  b.point_light(V(0, 0, 0), Gray(1));
+  b.camera(V(-3e38, 0, 0), V(0, 0, 0), V(0, 1, 0), 1, 1, 1, 4, 4);
+  const rt::SceneDesc s = b.scene();
+  rt::RenderOptions o;
+  rt::FlatScene f = rt::flatten_scene(s, o);  // In the world's frame both fit.
+  try {
+    rt::set_camera(f, s, 0, o);
+    ADD_FAILURE() << "the camera's frame was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("Sphere 0: lies beyond float range from the camera"),
+              std::string::npos)
+        << e.what();
   }
 }
 
