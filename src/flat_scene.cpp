@@ -14,7 +14,7 @@ namespace rt {
 // C++ and OpenCL C must agree on every byte of the shared structs.
 static_assert(sizeof(float3) == 16 && alignof(float3) == 16, "float3 must match OpenCL");
 static_assert(sizeof(Material) == 112, "Material layout");
-static_assert(sizeof(Light) == 112, "Light layout");
+static_assert(sizeof(Light) == 128, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 144, "Instance layout");
 static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
@@ -71,6 +71,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
       }
     std::vector<int> order;
     int offset = static_cast<int>(f.triangles.size());
+    fm.first_triangle = offset;
     std::vector<BinaryBvhNode> binary;
     BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, binary, order);
     WideBvhResult w = collapse_bvh(binary, r.root, f.nodes);
@@ -187,6 +188,8 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
     if (m.brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) f |= RT_FEATURE_BRDF;
   }
   for (const Light& l : tagged_lights(scene, Vec3d{})) f |= l.type;
+  for (const ObjectDesc& o : scene.objects)
+    if (o.emits) f |= o.kind == ObjectDesc::kSphere ? RT_LIGHT_SPHERE : RT_LIGHT_MESH;
   bool textured = scene.background_texture >= 0;
   for (const ObjectDesc& o : scene.objects) textured = textured || !o.textures.empty();
   if (textured) f |= RT_FEATURE_TEXTURES;

@@ -40,9 +40,10 @@ struct FlatStats {
 
 // A mesh's bottom level, built once in the mesh's own frame (src/world_frame.h).
 struct FlatMesh {
-  int blas_root = -1;  // -1: no triangle left after degenerates.
-  Aabb box;            // Of its float vertices, in its frame.
-  Vec3d origin;        // The object-space point its frame is centred on.
+  int blas_root = -1;       // -1: no triangle left after degenerates.
+  Aabb box;                 // Of its float vertices, in its frame.
+  Vec3d origin;             // The object-space point its frame is centred on.
+  int first_triangle = -1;  // Index of its first triangle in FlatScene::triangles.
 };
 
 #define RT_FLAT_SCENE_VECTOR(Type, name) std::vector<Type> name;
@@ -74,6 +75,13 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
 // Appends the scene's images to flat.texels and a descriptor per TextureMap to
 // flat.textures (src/flat_textures.cpp).
 void flatten_textures(const SceneDesc& scene, FlatScene& flat);
+
+// Appends a light to flat.lights for every emitting object (LightMesh, LightSphere) and
+// fills flat.instance_lights and flat.light_cdf (src/flat_object_lights.cpp).
+// instance_of_object[i] is object i's index in flat.instances (-1: no instance, an empty
+// mesh); mesh_first[m] is the index of mesh m's first triangle in flat.triangles.
+void flatten_object_lights(const SceneDesc& scene, const std::vector<int>& instance_of_object,
+                           const std::vector<int>& mesh_first, FlatScene& flat);
 
 // The feature bits the scene needs for `camera` (cl/features.h).
 int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options);

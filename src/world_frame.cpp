@@ -136,6 +136,7 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
   std::vector<Instance> unordered;
   std::vector<InstanceTextures> unordered_textures;
   std::vector<Aabb> boxes;
+  std::vector<int> object_of;  // The object each entry of `unordered` was made from.
   Aabb unit;
   unit.grow(-1, -1, -1);
   unit.grow(1, 1, 1);
@@ -165,6 +166,7 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
                  (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
                  (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
+    object_of.push_back(static_cast<int>(&o - scene.objects.data()));
     InstanceTextures it;
     for (int k = 0; k < RT_MAX_OBJECT_TEXTURES; ++k)
       it.ids[k] = k < static_cast<int>(o.textures.size()) ? o.textures[k] : -1;
@@ -177,10 +179,16 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
   WideBvhResult wide_top = collapse_bvh(binary, top.root, f.nodes);
   f.instances.clear();
   f.instance_textures.clear();
+  std::vector<int> instance_of_object(scene.objects.size(), -1);
   for (int i : order) {
+    instance_of_object[object_of[i]] = static_cast<int>(f.instances.size());
     f.instances.push_back(unordered[i]);
     f.instance_textures.push_back(unordered_textures[i]);
   }
+  std::vector<int> mesh_first;
+  for (const FlatMesh& m : f.meshes) mesh_first.push_back(m.first_triangle);
+  f.light_cdf.clear();
+  flatten_object_lights(scene, instance_of_object, mesh_first, f);
   f.header.tlas_root = wide_top.root;
   f.stats.tlas_depth = wide_top.depth;
   f.stats.nodes = f.nodes.size();
@@ -193,6 +201,8 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
   if (f.nodes.empty()) f.nodes.emplace_back();
   if (f.instances.empty()) f.instances.emplace_back();
   if (f.instance_textures.empty()) f.instance_textures.emplace_back();
+  if (f.instance_lights.empty()) f.instance_lights.emplace_back();
+  if (f.light_cdf.empty()) f.light_cdf.emplace_back();
 }
 
 }  // namespace rt
