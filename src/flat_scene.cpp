@@ -139,14 +139,15 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
 void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options) {
   const CameraDesc& c = scene.cameras[camera];
   const auto start = std::chrono::steady_clock::now();
-  place_world(flat, scene, c.position, options);
+  const Vec3d origin = options.camera_frame ? c.position : Vec3d{};
+  place_world(flat, scene, origin, options);
   flat.stats.place_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   Camera& cam = flat.header.camera;
   Vec3d w = normalize(c.gaze) * -1.0;
   Vec3d u = normalize(cross(c.up, w));
   Vec3d v = cross(w, u);
-  cam.position = make_float3(0.0f, 0.0f, 0.0f);  // The frame's origin.
+  cam.position = to_float3(c.position - origin);  // The frame's origin by default.
   cam.u = to_float3(u);
   cam.v = to_float3(v);
   cam.w = to_float3(w);
@@ -169,7 +170,7 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
 int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options) {
   int f = 0;
   std::vector<bool> used(scene.materials.size());
-  const Vec3d eye = scene.cameras[camera].position;
+  const Vec3d eye = options.camera_frame ? scene.cameras[camera].position : Vec3d{};
   for (const ObjectDesc& o : scene.objects) {
     const bool sphere = o.kind == ObjectDesc::kSphere;
     f |= sphere ? RT_FEATURE_SPHERES : RT_FEATURE_TRIANGLES;

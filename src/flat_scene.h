@@ -27,6 +27,9 @@ struct RenderOptions {
   bool use_scene_epsilon = true;  // Off: rely on the scale-aware offset alone.
   bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
   bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
+  // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
+  // tests that trace rays given in world coordinates.
+  bool camera_frame = true;
   StopRule stop;
   BvhOptions bvh;
 };
