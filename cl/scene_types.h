@@ -99,6 +99,10 @@ typedef struct Instance {
   float4 world_to_object[3];  // Rows of the inverse transform.
   float4 object_to_world[3];  // Rows of the transform (at time 0).
   float3 motion;              // World-space translation at time 1.
+  // Where procedural textures are evaluated, added to the point the course defines them at:
+  // a mesh's vertices are stored relative to a point of the mesh (its frame origin, this
+  // vector), a sphere's world-space point relative to the camera (the camera's position).
+  float3 texture_origin;
   int kind;
   int blas_root;  // Node index of the mesh's BVH root (meshes only).
   int material;

@@ -28,14 +28,26 @@ struct RenderOptions {
   bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
   bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
   bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
+  // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
+  // tests that trace rays given in world coordinates.
+  bool camera_frame = true;
   StopRule stop;
   BvhOptions bvh;
 };
 
 struct FlatStats {
   double bvh_build_ms = 0;
+  double place_ms = 0;  // The last place_world: the top level and lights for a camera.
   size_t nodes = 0, triangles = 0, instances = 0;
   int tlas_depth = 0, max_blas_depth = 0;
+};
+
+// A mesh's bottom level, built once in the mesh's own frame (src/world_frame.h).
+struct FlatMesh {
+  int blas_root = -1;       // -1: no triangle left after degenerates.
+  Aabb box;                 // Of its float vertices, in its frame.
+  Vec3d origin;             // The object-space point its frame is centred on.
+  int first_triangle = -1;  // Index of its first triangle in FlatScene::triangles.
 };
 
 #define RT_FLAT_SCENE_VECTOR(Type, name) std::vector<Type> name;
@@ -44,19 +56,24 @@ struct FlatScene {
   RT_DATA_ARRAYS(RT_FLAT_SCENE_VECTOR)  // The device arrays of cl/data_arrays.h.
   FlatStats stats;
   bool fast_math = false;  // Host-side only: how the OpenCL program is built.
+  // Host-side only: what a change of frame (place_world) keeps and where the frame is.
+  std::vector<FlatMesh> meshes;  // Per SceneDesc::meshes.
+  size_t blas_nodes = 0;         // nodes[0, blas_nodes) are the bottom levels.
+  Vec3d world_origin;            // The world point at the devices' origin.
 
   // Pointers into the arrays above, for the CPU reference.
   SceneData view() const;
 };
 #undef RT_FLAT_SCENE_VECTOR
 
-// Builds the BVHs and arrays; the camera is set separately (geometry is shared by every
-// camera of a file).
+// Builds the BVHs and arrays in the world's frame; set_camera moves them into a camera's
+// (the bottom levels, most of the work, are shared by every camera of a file).
 FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options);
 
 // The normals of shadingMode="smooth": per vertex, the normalized sum of the unnormalized
 // cross products of its faces (area-weighted). Exporters write the same normals.
 std::vector<Vec3d> vertex_normals(const MeshDesc& mesh);
+// Sets the camera and moves the world into its frame (the camera at the origin).
 void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options);
 
 // Appends the scene's images to flat.texels and a descriptor per TextureMap to

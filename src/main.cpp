@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "cli.h"
 #include "device/cl/cl_platform.h"
@@ -22,13 +24,14 @@ void print_stats(const std::string& out, const rt::RenderDevice& device, const r
                  const rt::RenderResult& r) {
   std::fprintf(stderr,
                "stats: %s: device %s | load %.1f ms | bvh %.1f ms (%zu nodes, %zu triangles, "
-               "%zu instances, depth top %d / mesh %d) | kernel compile %.1f ms%s | render "
+               "%zu instances, depth top %d / mesh %d) | camera frame %.2f ms | kernel "
+               "compile %.1f ms%s | render "
                "%.3f s | %d spp | %.3f Msamples/s | %.3f Mrays/s | features 0x%x\n",
                out.c_str(), device.name().c_str(), s.load_ms, flat.stats.bvh_build_ms,
                flat.stats.nodes, flat.stats.triangles, flat.stats.instances, flat.stats.tlas_depth,
-               flat.stats.max_blas_depth, load.compile_ms, load.cache_hit ? " (cache hit)" : "",
-               r.seconds, r.spp, r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
-               static_cast<unsigned>(flat.header.features));
+               flat.stats.max_blas_depth, flat.stats.place_ms, load.compile_ms,
+               load.cache_hit ? " (cache hit)" : "", r.seconds, r.spp, r.samples / r.seconds * 1e-6,
+               r.rays / r.seconds * 1e-6, static_cast<unsigned>(flat.header.features));
   if (s.desc.degenerate_triangles)
     std::fprintf(stderr, "stats: degenerate triangles skipped: %d\n", s.desc.degenerate_triangles);
 }
@@ -46,7 +49,12 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
   }
   // Every image's memory is checked before the first render starts.
   for (int c : cameras) {
-    rt::set_camera(flat, s.desc, c, opt.render);
+    try {
+      rt::set_camera(flat, s.desc, c, opt.render);  // Also checks the camera's frame.
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(s.path + ": Cameras > Camera " + std::to_string(c) + ": " +
+                               e.what());
+    }
     const Camera& fc = flat.header.camera;
     try {
       device->check_memory(

@@ -11,15 +11,17 @@
 
 // Lights as the file describes them (global, beside the device types they become);
 // flatten_scene turns them into the device's tagged Light array (cl/scene_types.h).
+// Positions stay in double until the world is moved into the camera's frame
+// (src/world_frame.h); the other members are frame-independent and already float.
 struct PointLight {
-  float3 position;
+  rt::Vec3d position;
   float3 intensity;
 };
 
 // A parallelogram corner + s * edge1 + t * edge2; the course's square lights are the
 // special case of two orthogonal edges of length Size centred on Position.
 struct AreaLight {
-  float3 corner;
+  rt::Vec3d corner;
   float3 edge1;
   float3 edge2;
   float3 normal;

@@ -86,7 +86,7 @@ TEST(Analytic, AreaLightIrradianceMatchesTheFormFactor) {
   rt::SceneDesc s = FloorSeenFromAbove(1, 4096);
   const double L = 1000, side = 2, h = 1.5, cx = 0.3, cy = 0.2;
   AreaLight light{};
-  light.corner = make_float3(cx - side / 2, cy - side / 2, h);
+  light.corner = {cx - side / 2, cy - side / 2, h};
   light.edge1 = make_float3(side, 0, 0);
   light.edge2 = make_float3(0, side, 0);
   light.normal = make_float3(0, 0, -1);
@@ -130,7 +130,7 @@ TEST(Analytic, PointLightFollowsTheInverseSquareLaw) {
   // kd = 0.5, intensity 1000 at height 2 directly above the seen point: 0.5 * 1000 / 4.
   rt::SceneDesc s = FloorSeenFromAbove(0.5, 1);
   PointLight pl{};
-  pl.position = make_float3(0, 0, 2);
+  pl.position = {0, 0, 2};
   pl.intensity = make_float3(1000, 1000, 1000);
   s.point_lights.push_back(pl);
   EXPECT_FLOAT_EQ(static_cast<float>(RenderOnePixel(s).mean), 125.0f);

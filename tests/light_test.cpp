@@ -150,7 +150,7 @@ TEST(LightArray, FlattenTagsPointLightsFirstAndNumbersTheSampledOnes) {
   SceneDesc desc;
   desc.cameras.emplace_back();
   AreaLight a{};
-  a.corner = V(0, 0, 1);
+  a.corner = {0, 0, 1};
   a.edge1 = V(1, 0, 0);
   a.edge2 = V(0, 1, 0);
   a.normal = V(0, 0, -1);
@@ -158,7 +158,7 @@ TEST(LightArray, FlattenTagsPointLightsFirstAndNumbersTheSampledOnes) {
   a.area = 1;
   desc.area_lights = {a, a};
   PointLight p{};
-  p.position = V(0, 0, 3);
+  p.position = {0, 0, 3};
   p.intensity = V(5, 5, 5);
   desc.point_lights = {p};
   FlatScene f = flatten_scene(desc, RenderOptions());

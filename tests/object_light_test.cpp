@@ -60,6 +60,7 @@ Flat Load(const std::string& xml) {
   Flat f;
   f.scene = load_scene_text(xml, "object_light_test.xml");
   RenderOptions opt;
+  opt.camera_frame = false;  // The tests evaluate lights at world-space points.
   f.flat = flatten_scene(f.scene, opt);
   set_camera(f.flat, f.scene, 0, opt);
   f.sd = f.flat.view();

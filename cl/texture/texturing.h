@@ -102,8 +102,10 @@ RT_DEVICE void ApplyTextures(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfaceP
   if (list->ids[0] < 0) return;
   TextureFrame f = ComputeTextureFrame(sd, s);
   // Procedural textures are evaluated at the object-space point of meshes but at the
-  // world-space point of spheres, as the course's images show (cube_perlin, ellipsoids).
-  float3 q = s->hit.primitive >= 0 ? f.p_obj : s->p;
+  // world-space point of spheres, as the course's images show (cube_perlin, ellipsoids);
+  // texture_origin restores the file's frame from the one the devices work in.
+  float3 q = (s->hit.primitive >= 0 ? f.p_obj : s->p) +
+             sd->instances[s->hit.instance].texture_origin;
   for (int k = 0; k < RT_MAX_OBJECT_TEXTURES && list->ids[k] >= 0; ++k) {
     RT_GLOBAL const TextureDesc* t = &sd->textures[list->ids[k]];
     if (t->decal == RT_DECAL_REPLACE_NORMAL) {

@@ -37,7 +37,7 @@ void Loader::read_lights(const XMLElement* scene) {
       scene_.ambient = non_negative(l);
     } else if (name == "PointLight") {
       PointLight p{};
-      p.position = to_float3(vec3(child(l, "Position", true)));
+      p.position = vec3(child(l, "Position", true));
       p.intensity = to_float3(non_negative(child(l, "Intensity", true)));
       scene_.point_lights.push_back(p);
     } else if (name == "AreaLight") {
@@ -64,7 +64,7 @@ void Loader::read_lights(const XMLElement* scene) {
       }
       Vec3d normal = cross(e1, e2);
       if (length(normal) == 0) fail(l, "degenerate light: zero area");
-      a.corner = to_float3(pos);
+      a.corner = pos;
       a.edge1 = to_float3(e1);
       a.edge2 = to_float3(e2);
       a.normal = to_float3(normalize(normal));

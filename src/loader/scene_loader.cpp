@@ -50,7 +50,11 @@ std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count, size_
       fail(e, "not a number: '" + shorten(token) + "'");
     // Overflow gives inf; underflow (1e-400) is a representable tiny value, not an error.
     if (!std::isfinite(v)) fail(e, "not a finite number: '" + shorten(token) + "'");
-    // The devices work in float: a larger value would turn into inf there.
+    // The devices work in float. Positions reach them relative to the camera (src/
+    // world_frame.h), so a position beyond float range could in principle be rendered, but
+    // there even double resolves only 1e22 units (2^-52 of the value): no detail the file
+    // could mean survives the parse. Every other number (radii, scales, colours) goes to
+    // float as it is. So one limit for all: the float range.
     if (std::fabs(v) > FLT_MAX)
       fail(e, "'" + shorten(token) + "' is too large (beyond float range)");
     out.push_back(v);

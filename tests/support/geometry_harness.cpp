@@ -69,6 +69,7 @@ FlatScene Flatten(const SceneDesc& s, int bins, int max_leaf) {
   RenderOptions opt;
   opt.bvh.bins = bins;
   opt.bvh.max_leaf = max_leaf;
+  opt.camera_frame = false;  // The tests trace rays given in world coordinates.
   FlatScene f = flatten_scene(s, opt);
   set_camera(f, s, 0, opt);
   return f;

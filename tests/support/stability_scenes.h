@@ -132,7 +132,7 @@ class Builder {
 
   void point_light(Vec3d position, Vec3d intensity) {
     PointLight l{};
-    l.position = F3(position);
+    l.position = position;
     l.intensity = F3(intensity);
     s_.point_lights.push_back(l);
   }
@@ -141,7 +141,7 @@ class Builder {
   void area_light(Vec3d corner, Vec3d e1, Vec3d e2, Vec3d radiance) {
     AreaLight a{};
     Vec3d n = rt::cross(e1, e2);
-    a.corner = F3(corner);
+    a.corner = corner;
     a.edge1 = F3(e1);
     a.edge2 = F3(e2);
     a.normal = F3(rt::normalize(n));
@@ -182,7 +182,6 @@ class Builder {
 // identity (the vertices move).
 inline rt::SceneDesc MapScene(const rt::SceneDesc& in, double s, Vec3d t) {
   auto p = [&](Vec3d v) { return v * s + t; };
-  auto pf = [&](float3 v) { return F3(p(Vec3d{v.x, v.y, v.z})); };
   auto vf = [&](float3 v, double k) { return F3(Vec3d{v.x * k, v.y * k, v.z * k}); };
   rt::SceneDesc o = in;
   for (auto& m : o.meshes)
@@ -194,11 +193,11 @@ inline rt::SceneDesc MapScene(const rt::SceneDesc& in, double s, Vec3d t) {
   }
   for (auto& m : o.materials) m.absorption = vf(m.absorption, 1.0 / s);
   for (auto& l : o.point_lights) {
-    l.position = pf(l.position);
+    l.position = p(l.position);
     l.intensity = vf(l.intensity, s * s);
   }
   for (auto& l : o.area_lights) {
-    l.corner = pf(l.corner);
+    l.corner = p(l.corner);
     l.edge1 = vf(l.edge1, s);
     l.edge2 = vf(l.edge2, s);
     l.area = static_cast<float>(static_cast<double>(l.area) * s * s);

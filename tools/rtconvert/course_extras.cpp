@@ -90,7 +90,7 @@ json area_light_to_json(const AreaLight& a) {
 
 AreaLight area_light_from_json(const json& j) {
   AreaLight a{};
-  a.corner = float3_from(j.at("corner"));
+  a.corner = vec3d_from(j.at("corner"));
   a.edge1 = float3_from(j.at("edge1"));
   a.edge2 = float3_from(j.at("edge2"));
   a.normal = float3_from(j.at("normal"));
@@ -105,7 +105,7 @@ json point_light_to_json(const PointLight& p) {
 
 PointLight point_light_from_json(const json& j) {
   PointLight p{};
-  p.position = float3_from(j.at("position"));
+  p.position = vec3d_from(j.at("position"));
   p.intensity = float3_from(j.at("intensity"));
   return p;
 }

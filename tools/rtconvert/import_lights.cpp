@@ -46,7 +46,7 @@ Bounds scene_bounds(const rt::SceneDesc& s) {
     }
     for (const Vec3d& p : s.meshes[o.mesh].positions) b.grow(o.transform.point(p));
   }
-  for (const auto& a : s.area_lights) b.grow(v3(a.corner));
+  for (const auto& a : s.area_lights) b.grow(a.corner);
   if (b.lo.x > b.hi.x) b.grow({0, 0, 0});
   return b;
 }
@@ -78,7 +78,7 @@ bool parallelogram_light(const aiMesh& m, const Mat4& world, float3 radiance, Ar
         double size = std::max(length(e1), length(e2));
         if (length(n) == 0 || length(corners[i] + e1 + e2 - corners[l]) > 1e-5 * size) continue;
         out = AreaLight{};
-        out.corner = f3(corners[i]);
+        out.corner = corners[i];
         out.edge1 = f3(e1);
         out.edge2 = f3(e2);
         out.normal = f3(normalize(n));
@@ -143,7 +143,7 @@ void import_lights(const aiScene& ai, const std::string& file, bool photometric,
         report.warn(where + "spot light mapped to a point light (the cone is lost)");
         [[fallthrough]];
       case aiLightSource_POINT:
-        s.point_lights.push_back({f3(pos), f3(c * to_course)});
+        s.point_lights.push_back({pos, f3(c * to_course)});
         break;
       case aiLightSource_DIRECTIONAL: {
         // A distant point light giving the same irradiance at the scene's centre.
@@ -151,7 +151,7 @@ void import_lights(const aiScene& ai, const std::string& file, bool photometric,
         double far = 100 * b.diagonal();
         Vec3d p = b.centre() - dir * far;
         double scale = (photometric ? kScale / M_PI : kScale) * far * far;
-        s.point_lights.push_back({f3(p), f3(c * scale)});
+        s.point_lights.push_back({p, f3(c * scale)});
         report.warn(where + "directional light mapped to a point light 100 scene sizes away");
         break;
       }
@@ -168,7 +168,7 @@ void import_lights(const aiScene& ai, const std::string& file, bool photometric,
           break;
         }
         AreaLight a{};
-        a.corner = f3(pos - e1 * 0.5 - e2 * 0.5);
+        a.corner = pos - e1 * 0.5 - e2 * 0.5;
         a.edge1 = f3(e1);
         a.edge2 = f3(e2);
         a.normal = f3(normalize(cross(e1, e2)));
@@ -206,7 +206,7 @@ void add_defaults(const std::string& file, int width, rt::SceneDesc& s, Report& 
     const rt::CameraDesc& c = s.cameras[0];
     Vec3d p = c.position + Vec3d{0, 0.5 * b.diagonal(), 0};
     double d2 = dot(p - b.centre(), p - b.centre());
-    s.point_lights.push_back({f3(p), f3(Vec3d{0.9, 0.9, 0.9} * (kScale * d2))});
+    s.point_lights.push_back({p, f3(Vec3d{0.9, 0.9, 0.9} * (kScale * d2))});
     s.ambient = {20, 20, 20};
     for (auto& m : s.materials)
       if (m.ambient.x == 0 && m.ambient.y == 0 && m.ambient.z == 0) m.ambient = m.diffuse;
