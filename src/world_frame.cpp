@@ -191,6 +191,7 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
   flatten_object_lights(scene, instance_of_object, mesh_first, f);
   // The environment's tables are the same in every frame, but its entry in `lights` was
   // made anew above and needs the map's size and power again.
+  f.header.environment = -1;
   if (scene.environment_map.width > 0) {
     f.env_texels.clear();
     f.env_marginal_cdf.clear();

@@ -20,7 +20,7 @@
 #include "family.h"
 #include "io/moments.h"
 #include "io/png_io.h"
-#include "stability_scenes.h"
+#include "support/stability_scenes.h"
 #include "support/device_harness.h"
 #include "welch.h"
 
