@@ -86,7 +86,7 @@ std::vector<Light> tagged_lights(const SceneDesc& scene) {
 // A directional light's shadow segment runs from the shading point towards the light for
 // `distance`: twice the diagonal of the box around every object (at least 1) leaves the box
 // from any point inside it.
-void set_directional_distance(const std::vector<Aabb>& boxes, std::vector<Light>& lights) {
+void set_directional_distance(const std::vector<Aabb>& boxes, PageAlignedVector<Light>& lights) {
   Aabb world;
   for (const Aabb& b : boxes) world.grow(b);
   double diagonal = 0;
@@ -123,11 +123,19 @@ SceneData FlatScene::view() const {
 FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   FlatScene f;
-  f.materials = scene.materials;
-  f.lights = tagged_lights(scene);
+  f.materials.assign(scene.materials.begin(), scene.materials.end());
+  std::vector<Light> lights = tagged_lights(scene);
+  f.lights.assign(lights.begin(), lights.end());
   // Bottom level: one BVH per mesh, whatever the number of its instances.
   std::vector<int> blas_root(scene.meshes.size(), -1);
   std::vector<Aabb> blas_box(scene.meshes.size());
+  // Reserved at their final size: growing by doubling would hold a half-size copy of the
+  // largest arrays beside the full one, raising the peak memory of large meshes.
+  size_t triangle_count = 0;
+  for (const MeshDesc& mesh : scene.meshes) triangle_count += mesh.triangles.size();
+  f.triangles.reserve(triangle_count);
+  f.normals.reserve(triangle_count);
+  f.triangle_uvs.reserve(triangle_count);
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
     const MeshDesc& mesh = scene.meshes[mi];
     if (mesh.triangles.empty()) continue;

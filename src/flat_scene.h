@@ -6,6 +6,7 @@
 
 #include "bvh_build.h"
 #include "scene.h"
+#include "util/page_aligned.h"
 
 namespace rt {
 
@@ -37,7 +38,8 @@ struct FlatStats {
   int tlas_depth = 0, max_blas_depth = 0;
 };
 
-#define RT_FLAT_SCENE_VECTOR(Type, name) std::vector<Type> name;
+// Page-aligned, so an OpenCL device on the host's CPU renders from them without a copy.
+#define RT_FLAT_SCENE_VECTOR(Type, name) PageAlignedVector<Type> name;
 struct FlatScene {
   SceneHeader header{};
   RT_DATA_ARRAYS(RT_FLAT_SCENE_VECTOR)  // The device arrays of cl/data_arrays.h.
