@@ -5,9 +5,12 @@
 # runs interleaved with the first (A B A B) and the table gets its figures and the ratio.
 #
 # usage: bench/trace_bench.sh [--build DIR] [--baseline DIR] [--reps N] [--spp N]
-#                             [--scenes "tap 1M 4M"] [--devices "cpu cl"]
+#                             [--scenes "tap 1M 4M"] [--devices "cpu cl"] [--build-scenes "4M"]
 # Camera-ray rate = (spp - 1) * pixels / (CPU-s at spp - CPU-s at 1 spp): the difference
 # cancels loading, BVH build, kernel compile and upload, leaving the tracing alone.
+# Where the build has embree_bench (Debian's libembree-dev installed), two more tables: the
+# same camera rays traced by Embree 3 (single rays and 16-ray packets) beside ours, and the
+# BVH build time of the --build-scenes against Embree's HIGH build at 1 and 2 threads.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="$here/build"
@@ -16,6 +19,7 @@ reps=3
 spp=9
 scene_names="tap 1M 4M"
 devices="cpu cl"
+build_scenes="4M"
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) build="$(cd "$2" && pwd)"; shift 2 ;;
@@ -24,6 +28,7 @@ while [ $# -gt 0 ]; do
     --spp) spp="$2"; shift 2 ;;
     --scenes) scene_names="$2"; shift 2 ;;
     --devices) devices="$2"; shift 2 ;;
+    --build-scenes) build_scenes="$2"; shift 2 ;;
     *) echo "trace_bench.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -75,6 +80,10 @@ echo "OpenCL device: $("$build/raytracer" --list-devices 2>/dev/null | head -1)"
 echo
 echo "| scene | triangles | device | build | Mrays/CPU-s | BVH build ms | peak MiB (1 spp) |"
 echo "|---|---:|---|---|---:|---:|---:|"
+embree="$build/embree_bench"
+[ -x "$embree" ] || embree=""
+embree_rows=()
+build_rows=()
 for name in $scene_names; do
   scene="$(scene_path "$name")"
   [ -f "$scene" ] || { echo "| $name | missing | | | | | |"; continue; }
@@ -97,10 +106,53 @@ for name in $scene_names; do
     done
     for b in "${builds[@]}"; do
       label=$([ "$b" = "$build" ] && echo new || echo baseline)
-      printf '| %s | %s | %s | %s | %.2f | %.0f | %.0f |\n' "$name" "$tris" "$dev" "$label" \
-        "$(echo ${rate[$b]} | tr ' ' '\n' | median)" "$(echo ${bvh[$b]} | tr ' ' '\n' | median)" \
+      r="$(echo ${rate[$b]} | tr ' ' '\n' | median)"
+      [ "$b" = "$build" ] && [ "$dev" = cpu ] && renderer_rate="$r"
+      printf '| %s | %s | %s | %s | %.2f | %.0f | %.0f |\n' "$name" "$tris" "$dev" "$label" "$r" \
+        "$(echo ${bvh[$b]} | tr ' ' '\n' | median)" \
         "$(echo ${mem[$b]} | tr ' ' '\n' | median | awk '{print $1 / 1024}')"
     done
     unset rate bvh mem
   done
+  if [ -n "$embree" ]; then
+    # The same camera rays, one thread: ours (the reference's traversal alone) and Embree's.
+    line="$("$embree" "$cam" --spp "$spp" --reps "$reps")" || { echo "$line" >&2; exit 1; }
+    embree_rows+=("$(echo "$line" | awk -v n="$name" -v r="${renderer_rate:-0}" '{
+      for (i = 1; i < NF; i += 2) v[$i] = $(i + 1)
+      printf "| %s | %s | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s %% / %s %% |", n, v["triangles"],
+        v["rays"], r, v["ours"], v["embree1"], v["embree16"], r / v["embree1"], v["ratio1"],
+        v["agree1"], v["agree16"]}')")
+    if [[ " $build_scenes " == *" $name "* ]]; then
+      out="$("$embree" "$cam" --build --reps "$reps")" || { echo "$out" >&2; exit 1; }
+      same=$(echo "$out" | awk '/^same_tree/{print $2}')
+      while read -r _ threads _ ow oc _ ew ec; do
+        build_rows+=("| $name | $tris | $threads | $ow | $oc | $ew | $ec | $same |")
+      done < <(echo "$out" | grep '^build ')
+    fi
+    unset renderer_rate
+  fi
 done
+if [ -n "$embree" ]; then
+  echo
+  echo "The same camera rays traced by Embree 3 (BVH quality HIGH, no culling), Mrays per"
+  echo "CPU-second of one thread; \"renderer\" is the CPU reference's rate above (a whole"
+  echo "sample: camera ray, traversal, surface, film), \"traversal alone\" our cl/bvh.h called"
+  echo "on the rays as Embree is; agreement: share of rays with the same hit distance (rel. 1e-4)"
+  echo "ours vs Embree single, Embree single vs packets."
+  echo
+  echo "| scene | triangles | rays | ours, renderer | ours, traversal alone | Embree single rays | Embree 16-ray packets | renderer / Embree single | traversal / Embree single | agreement |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  printf '%s\n' "${embree_rows[@]}"
+  if [ ${#build_rows[@]} -gt 0 ]; then
+    echo
+    echo "BVH build, medians of $reps: ours is all of flatten_scene (what the renderer waits"
+    echo "for), Embree's is rtcCommitScene at quality HIGH; same tree: ours at 1 and 2 threads."
+    echo
+    echo "| scene | triangles | threads | ours wall s | ours CPU s | Embree HIGH wall s | Embree CPU s | same tree |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---|"
+    printf '%s\n' "${build_rows[@]}"
+  fi
+else
+  echo
+  echo "(no Embree columns: build/embree_bench is built only where libembree-dev is installed)"
+fi

@@ -51,4 +51,31 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, float px, float 
   return ray;
 }
 
+// Camera sample `sample` of pixel (x, y): its key (every later random number of the sample
+// derives from it), its film position within the pixel (for the reconstruction filter)
+// and its ray. The renderer and bench/embree_bench.cpp take their camera rays from here.
+typedef struct CameraSample {
+  SampleKey key;
+  float2 film;
+  Ray ray;
+} CameraSample;
+
+RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int x, int y,
+                                            uint sample) {
+  RT_GLOBAL const SceneHeader* h = sd->header;
+  RT_GLOBAL const Camera* cam = &h->camera;
+  CameraSample cs;
+  cs.key = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples, (uint)cam->strata,
+                         h->seed);
+  cs.film = make_float2(0.5f, 0.5f);
+  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1)
+    cs.film = Stratified2D(cs.key, RT_DIM_PIXEL);
+  float2 lens = make_float2(0.5f, 0.5f);
+  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)) lens = Stratified2D(cs.key, RT_DIM_LENS);
+  float time = 0.0f;
+  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR)) time = Stratified1D(cs.key, RT_DIM_TIME);
+  cs.ray = GenerateCameraRay(sd, (float)x + cs.film.x, (float)y + cs.film.y, lens, time);
+  return cs;
+}
+
 #endif  // RT_CAMERA_H

@@ -37,7 +37,7 @@ RT_DEVICE float3 RayAt(Ray r, float t) { return r.origin + r.direction * t; }
 // and wherever it lies, so no absolute floor is needed near the origin.
 RT_DEVICE float3 OffsetRayOrigin(float3 p, float3 n, float scene_epsilon, float scale) {
   const float kRelative = 8.0f / 8388608.0f;
-  float m = fmax(MaxComponent(Abs3(p)), scale);
+  float m = MaxF(MaxComponent(Abs3(p)), scale);
   return p + n * (scene_epsilon + kRelative * m);
 }
 

@@ -47,8 +47,8 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
     float b0 = 1.0f - hit.b1 - hit.b2;
     p_obj = tri->v0 * b0 + tri->v1 * hit.b1 + tri->v2 * hit.b2;
-    mag = fmax(MaxComponent(Abs3(tri->v0)),
-               fmax(MaxComponent(Abs3(tri->v1)), MaxComponent(Abs3(tri->v2))));
+    mag = MaxF(MaxComponent(Abs3(tri->v0)),
+               MaxF(MaxComponent(Abs3(tri->v1)), MaxComponent(Abs3(tri->v2))));
     ng_obj = Cross(tri->v1 - tri->v0, tri->v2 - tri->v0);
     n_obj = ng_obj;
     if (RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0) {
@@ -62,8 +62,8 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     RT_GLOBAL const float4* o2w = inst->object_to_world;
     float lin = 0.0f, shift = 0.0f;
     for (int r = 0; r < 3; ++r) {
-      lin = fmax(lin, fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z));
-      shift = fmax(shift, fabs(o2w[r].w));
+      lin = MaxF(lin, fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z));
+      shift = MaxF(shift, fabs(o2w[r].w));
     }
     sp.scale = lin * mag + shift;
     sp.p = TransformPoint(inst->object_to_world, p_obj);

@@ -30,7 +30,7 @@ void set_lane(LaneInt& v, int lane, int value) {
 
 class Collapser {
  public:
-  Collapser(const std::vector<BinaryBvhNode>& binary, std::vector<BvhNode>& wide)
+  Collapser(const std::vector<BinaryBvhNode>& binary, PageAlignedVector<BvhNode>& wide)
       : bin_(binary), wide_(wide) {}
 
   // Emits the wide node whose children are the binary nodes below `b` that the greedy
@@ -99,14 +99,14 @@ class Collapser {
   }
 
   const std::vector<BinaryBvhNode>& bin_;
-  std::vector<BvhNode>& wide_;
+  PageAlignedVector<BvhNode>& wide_;
   int depth_ = 0;
 };
 
 }  // namespace
 
 WideBvhResult collapse_bvh(const std::vector<BinaryBvhNode>& binary, int root,
-                           std::vector<BvhNode>& wide) {
+                           PageAlignedVector<BvhNode>& wide) {
   WideBvhResult r;
   if (root < 0) return r;
   Collapser c(binary, wide);

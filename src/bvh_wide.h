@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bvh_build.h"
+#include "util/page_aligned.h"
 
 namespace rt {
 
@@ -17,6 +18,6 @@ struct WideBvhResult {
 // an interior wide node, even when the binary tree is a single leaf, so traversal starts
 // with a node test. Leaves keep their primitive ranges, at most RT_BVH_MAX_LEAF each.
 WideBvhResult collapse_bvh(const std::vector<BinaryBvhNode>& binary, int root,
-                           std::vector<BvhNode>& wide);
+                           PageAlignedVector<BvhNode>& wide);
 
 }  // namespace rt

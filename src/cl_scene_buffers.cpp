@@ -8,18 +8,25 @@ namespace rt {
 namespace {
 
 template <typename T>
-cl::Buffer upload(const cl::Context& context, const T* data, size_t count) {
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * count,
-                    const_cast<T*>(data));
+cl::Buffer upload(const cl::Context& context, const T* data, size_t count, bool share) {
+  return cl::Buffer(context,
+                    CL_MEM_READ_ONLY | (share ? CL_MEM_USE_HOST_PTR : CL_MEM_COPY_HOST_PTR),
+                    sizeof(T) * count, const_cast<T*>(data));
 }
 
 }  // namespace
 
-ClSceneBuffers upload_scene(const cl::Context& context, const FlatScene& flat) {
+ClSceneBuffers upload_scene(const cl::Context& context, const FlatScene& flat, bool share_host,
+                            size_t base_align) {
   ClSceneBuffers b;
-  b.arrays.push_back(upload(context, &flat.header, 1));
-#define RT_UPLOAD_ARRAY(Type, name) \
-  b.arrays.push_back(upload(context, flat.name.data(), flat.name.size()));
+  b.arrays.push_back(upload(context, &flat.header, 1, false));
+  auto aligned = [&](const void* p) {
+    return share_host && base_align > 0 && reinterpret_cast<uintptr_t>(p) % base_align == 0;
+  };
+#define RT_UPLOAD_ARRAY(Type, name)                                                    \
+  b.arrays.push_back(                                                                  \
+      upload(context, flat.name.data(), flat.name.size(), aligned(flat.name.data()))); \
+  b.shared_bytes += aligned(flat.name.data()) ? sizeof(Type) * flat.name.size() : 0;
   RT_DATA_ARRAYS(RT_UPLOAD_ARRAY)
 #undef RT_UPLOAD_ARRAY
   return b;

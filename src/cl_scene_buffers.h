@@ -20,10 +20,16 @@ namespace rt {
 // The header's buffer, then one per array of RT_DATA_ARRAYS, in that order.
 struct ClSceneBuffers {
   std::vector<cl::Buffer> arrays;
+  uint64_t shared_bytes = 0;  // Of them, the bytes the device reads from the host's arrays.
 };
 
-// Copies the header and every array of `flat` to read-only device buffers.
-ClSceneBuffers upload_scene(const cl::Context& context, const FlatScene& flat);
+// Read-only device buffers of the header and every array of `flat`. With `share_host`
+// (a device on the host's CPU, src/device/cl/cl_device.cpp), arrays whose storage is
+// aligned to `base_align` bytes become buffers over the host's memory itself
+// (CL_MEM_USE_HOST_PTR), so the scene is held once; `flat` must then outlive the buffers'
+// use. Otherwise, and always for the small header (rewritten per camera), they are copied.
+ClSceneBuffers upload_scene(const cl::Context& context, const FlatScene& flat, bool share_host,
+                            size_t base_align);
 
 // Sets the buffers as the kernel's arguments first_arg, first_arg + 1, ...; returns the
 // next free argument index.

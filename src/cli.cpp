@@ -89,7 +89,7 @@ OptionTable<CliOptions> make_raytracer_table() {
       .flag("--quiet,-q", RT_FIELD(quiet),
             "no progress and no notices (progress is also off when stderr is not a terminal)")
       .flag("--stats", RT_FIELD(stats),
-            "print the time split (load, BVH build, kernel compile, render), BVH figures, "
+            "print the time split (load, BVH build, kernel compile, upload, render), BVH figures, "
             "samples/s, rays/s and the feature bits")
       .flag("--strict", RT_FIELD(load.strict),
             "treat every warning about the scene as an error (unknown elements, repeated ids "

@@ -21,7 +21,7 @@ Vec3d to_vec3d(float3 v) { return {v.x, v.y, v.z}; }
 // Appends the mesh light's normalized cumulative areas (the last exactly 1) and returns its
 // total world-space area. The areas are those of the float triangles the devices hold.
 double append_area_cdf(const Triangle* tris, int count, const Mat4& transform,
-                       std::vector<float>& cdf) {
+                       PageAlignedVector<float>& cdf) {
   std::vector<double> sum(count);
   double total = 0;
   for (int k = 0; k < count; ++k) {

@@ -53,10 +53,17 @@ SceneData FlatScene::view() const {
 FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   FlatScene f;
-  f.materials = scene.materials;
+  f.materials.assign(scene.materials.begin(), scene.materials.end());
   // Bottom level: one BVH per mesh, whatever the number of its instances, in the mesh's
   // frame: its vertices relative to its frame origin, subtracted in double.
   f.meshes.resize(scene.meshes.size());
+  // Reserved at their final size: growing by doubling would hold a half-size copy of the
+  // largest arrays beside the full one, raising the peak memory of large meshes.
+  size_t triangle_count = 0;
+  for (const MeshDesc& mesh : scene.meshes) triangle_count += mesh.triangles.size();
+  f.triangles.reserve(triangle_count);
+  f.normals.reserve(triangle_count);
+  f.triangle_uvs.reserve(triangle_count);
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
     const MeshDesc& mesh = scene.meshes[mi];
     if (mesh.triangles.empty()) continue;

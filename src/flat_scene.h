@@ -6,6 +6,7 @@
 
 #include "bvh_build.h"
 #include "scene.h"
+#include "util/page_aligned.h"
 
 namespace rt {
 
@@ -50,7 +51,8 @@ struct FlatMesh {
   int first_triangle = -1;  // Index of its first triangle in FlatScene::triangles.
 };
 
-#define RT_FLAT_SCENE_VECTOR(Type, name) std::vector<Type> name;
+// Page-aligned, so an OpenCL device on the host's CPU renders from them without a copy.
+#define RT_FLAT_SCENE_VECTOR(Type, name) PageAlignedVector<Type> name;
 struct FlatScene {
   SceneHeader header{};
   RT_DATA_ARRAYS(RT_FLAT_SCENE_VECTOR)  // The device arrays of cl/data_arrays.h.

@@ -24,14 +24,15 @@ void print_stats(const std::string& out, const rt::RenderDevice& device, const r
                  const rt::RenderResult& r) {
   std::fprintf(stderr,
                "stats: %s: device %s | load %.1f ms | bvh %.1f ms (%zu nodes, %zu triangles, "
-               "%zu instances, depth top %d / mesh %d) | camera frame %.2f ms | kernel "
-               "compile %.1f ms%s | render "
+               "%zu instances, depth top %d / mesh %d) | camera frame %.2f ms | kernel compile "
+               "%.1f ms%s | upload %.1f ms (%.0f MiB shared) | render "
                "%.3f s | %d spp | %.3f Msamples/s | %.3f Mrays/s | features 0x%x\n",
                out.c_str(), device.name().c_str(), s.load_ms, flat.stats.bvh_build_ms,
                flat.stats.nodes, flat.stats.triangles, flat.stats.instances, flat.stats.tlas_depth,
                flat.stats.max_blas_depth, flat.stats.place_ms, load.compile_ms,
-               load.cache_hit ? " (cache hit)" : "", r.seconds, r.spp, r.samples / r.seconds * 1e-6,
-               r.rays / r.seconds * 1e-6, static_cast<unsigned>(flat.header.features));
+               load.cache_hit ? " (cache hit)" : "", load.upload_ms, load.shared_bytes / 1048576.0,
+               r.seconds, r.spp, r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
+               static_cast<unsigned>(flat.header.features));
   if (s.desc.degenerate_triangles)
     std::fprintf(stderr, "stats: degenerate triangles skipped: %d\n", s.desc.degenerate_triangles);
 }

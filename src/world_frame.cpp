@@ -49,7 +49,7 @@ bool finite_rows(const float4 rows[3]) {
 // A directional (or environment) light's shadow segment runs from the shading point towards the
 // light for `distance`: twice the diagonal of the box around every object (at least 1) leaves the
 // box from any point inside it.
-void set_directional_distance(const std::vector<Aabb>& boxes, std::vector<Light>& lights) {
+void set_directional_distance(const std::vector<Aabb>& boxes, PageAlignedVector<Light>& lights) {
   Aabb world;
   for (const Aabb& b : boxes) world.grow(b);
   double diagonal = 0;
@@ -124,7 +124,8 @@ Mat4 object_to_frame(const ObjectDesc& object, Vec3d mesh_origin, Vec3d world_or
 
 void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const RenderOptions& options) {
   f.world_origin = origin;
-  f.lights = tagged_lights(scene, origin);
+  std::vector<Light> lights = tagged_lights(scene, origin);
+  f.lights.assign(lights.begin(), lights.end());
   for (size_t i = 0; i < f.lights.size(); ++i) {
     const float3 p = f.lights[i].position;
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

@@ -60,7 +60,7 @@ TEST(BvhWide, CollapseCoversEveryPrimitiveOnceInsideItsBoxes) {
     std::vector<BinaryBvhNode> binary;
     std::vector<int> order;
     BvhBuildResult r = build_bvh(boxes, BvhOptions{}, 4, 10, binary, order);
-    std::vector<BvhNode> wide(2);  // Nodes of an earlier mesh.
+    PageAlignedVector<BvhNode> wide(2);  // Nodes of an earlier mesh.
     WideBvhResult w = collapse_bvh(binary, r.root, wide);
     ASSERT_EQ(w.root, 2);
     EXPECT_LE(w.depth, r.depth);

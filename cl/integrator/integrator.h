@@ -99,25 +99,17 @@ RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint
                               RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   RT_GLOBAL const Camera* cam = &h->camera;
-  SampleKey sk = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples,
-                               (uint)cam->strata, h->seed);
-  float2 film = make_float2(0.5f, 0.5f);
-  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1) film = Stratified2D(sk, RT_DIM_PIXEL);
-  float2 lens = make_float2(0.5f, 0.5f);
-  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)) lens = Stratified2D(sk, RT_DIM_LENS);
-  float time = 0.0f;
-  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR)) time = Stratified1D(sk, RT_DIM_TIME);
+  CameraSample cs = GenerateCameraSample(sd, x, y, sample);
   *weight = 1.0f;
   if (h->filter == RT_FILTER_GAUSSIAN) {
-    float dx = film.x - 0.5f, dy = film.y - 0.5f;
+    float dx = cs.film.x - 0.5f, dy = cs.film.y - 0.5f;
     *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
-  Ray ray = GenerateCameraRay(sd, (float)x + film.x, (float)y + film.y, lens, time);
   // The background image is stretched over the film, pixel (x, y) at (x, y) / resolution:
   // with the bilinear lookup's convention (texture/image_texture.h) an image of the film's
   // size is reproduced texel for texel, as in the course's galactica images.
   float2 pixel_uv = make_float2((float)x / (float)cam->width, (float)y / (float)cam->height);
-  return Li(sd, sk, ray, pixel_uv, info, rays);
+  return Li(sd, cs.key, cs.ray, pixel_uv, info, rays);
 }
 
 #endif  // RT_INTEGRATOR_H

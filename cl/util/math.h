@@ -27,7 +27,9 @@ RT_DEVICE float3 Normalize(float3 a) { return a * (1.0f / Length(a)); }
 
 RT_DEVICE float3 Vec3(float s) { return make_float3(s, s, s); }
 
-RT_DEVICE float MaxComponent(float3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+// MaxF, not fmax: the same value for every input without NaN (fmax's NaN rule is a library
+// call on the CPU, ten of them per camera sample before this changed).
+RT_DEVICE float MaxComponent(float3 a) { return MaxF(a.x, MaxF(a.y, a.z)); }
 
 RT_DEVICE float Component(float3 a, int axis) { return axis == 0 ? a.x : (axis == 1 ? a.y : a.z); }
 

@@ -40,7 +40,9 @@ struct RenderWork {
 
 // What loading a scene cost, for --stats.
 struct DeviceLoadInfo {
-  double compile_ms = 0;  // Building the program (or loading it from a cache); 0 on the CPU.
+  double compile_ms = 0;      // Building the program (or loading it from a cache); 0 on the CPU.
+  double upload_ms = 0;       // Making the scene's buffers and the film's; 0 on the CPU.
+  uint64_t shared_bytes = 0;  // Scene bytes a CPU OpenCL device reads in place (not copied).
   bool cache_hit = false;
   std::string build_options;  // OpenCL build options (feature defines included).
 };

@@ -25,6 +25,9 @@ class ClDevice final : public RenderDevice {
     queue_ = cl::CommandQueue(context_, device_);
     programs_ = std::make_unique<ClProgramCache>(context_, device_, options.kernel_cache);
     max_alloc_ = device_.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+    // A device on the host's own CPU reads the host's scene arrays in place.
+    share_host_ = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
+    base_align_ = device_.getInfo<CL_DEVICE_MEM_BASE_ADDR_ALIGN>() / 8;
     global_mem_ = device_.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
   }
 
@@ -59,6 +62,8 @@ class ClDevice final : public RenderDevice {
   std::string name_;
   bool generic_;
   uint64_t max_alloc_ = 0, global_mem_ = 0;
+  bool share_host_ = false;
+  size_t base_align_ = 0;
   // The loaded scene.
   ClProgram* program_ = nullptr;
   int width_ = 0, height_ = 0;
@@ -100,15 +105,21 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
   DeviceLoadInfo info;
   info.build_options =
       programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, flat.fast_math);
-  auto start = std::chrono::steady_clock::now();
   ClProgram& p = programs_->get(info.build_options, &info.compile_ms, &info.cache_hit);
+  auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+  };
   try {
-    scene_ = upload_scene(context_, flat);
+    auto upload_start = std::chrono::steady_clock::now();
+    scene_ = upload_scene(context_, flat, share_host_, base_align_);
     const size_t cells = std::max<size_t>(pixels_, 1);  // OpenCL has no empty buffers.
     accum_ = cl::Buffer(context_, CL_MEM_READ_WRITE, sizeof(PixelAccum) * cells);
     primary_ = cl::Buffer(context_, CL_MEM_READ_WRITE, sizeof(PrimaryInfo) * cells);
     queue_.enqueueFillBuffer(accum_, cl_uint(0), 0, sizeof(PixelAccum) * cells);
     queue_.enqueueFillBuffer(primary_, cl_uint(0), 0, sizeof(PrimaryInfo) * cells);
+    queue_.finish();
+    info.upload_ms = since(upload_start);
+    info.shared_bytes = scene_.shared_bytes;
     cl::Kernel& k = p.kernel;
     // The kernel's arguments: the scene, then (row_begin, sample_begin, sample_end) per
     // launch, then the two per-pixel outputs.
@@ -120,11 +131,10 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
     // builds its work-group functions then): an empty launch (no samples) over the whole
     // image triggers that here, outside the timed render, and counts as compile time.
     if (!p.warmed) {
+      auto warm_start = std::chrono::steady_clock::now();
       if (pixels_ > 0) launch({0, height_, 0, 0});
       p.warmed = true;
-      info.compile_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count();
+      info.compile_ms += since(warm_start);
     }
   } catch (const cl::Error& e) {
     fail(e);
