@@ -19,11 +19,13 @@
 #define RT_FEATURE_DEPTH_OF_FIELD (1 << 10)  // ApertureSize > 0.
 #define RT_FEATURE_MOTION_BLUR (1 << 11)     // MotionBlur on any object.
 #define RT_FEATURE_MULTISAMPLE (1 << 12)     // More than one sample per pixel: jittered.
-#define RT_FEATURE_TEXTURES (1 << 13)        // Textures: images, Perlin, checkerboard, bump/normal maps.
+#define RT_FEATURE_TEXTURES (1 << 13)  // Textures: images, Perlin, checkerboard, bump/normal maps.
 #define RT_FEATURE_DIRECTIONAL_LIGHTS (1 << 14)  // DirectionalLight.
 #define RT_FEATURE_SPOT_LIGHTS (1 << 15)         // SpotLight.
 #define RT_FEATURE_BRDF (1 << 16)  // A material with a BRDF other than the original Blinn-Phong.
-#define RT_FEATURE_ALL ((1 << 17) - 1)
+#define RT_FEATURE_PATH_TRACING \
+  (1 << 17)  // A camera with <Renderer>PathTracing (integrator/path.h).
+#define RT_FEATURE_ALL ((1 << 18) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in
@@ -43,9 +45,13 @@
 #endif
 // A compile-time constant in the kernel: untaken branches vanish.
 #define RT_HAS(scene, feature) ((RT_KERNEL_FEATURES & (feature)) != 0)
+// For #if around whole functions that only one feature calls: the kernel compiles them
+// only when the scene needs the feature.
+#define RT_COMPILED(feature) ((RT_KERNEL_FEATURES & (feature)) != 0)
 #else
 // A run-time test on the CPU, against the bits stored in the scene header.
 #define RT_HAS(scene, feature) (((scene)->header->features & (feature)) != 0)
+#define RT_COMPILED(feature) 1
 #endif
 
 #endif  // RT_FEATURES_H

@@ -25,8 +25,8 @@ typedef struct Material {
   float absorption_index;  // Imaginary part of a conductor's index (AbsorptionIndex).
   float roughness;
   int type;
-  int unlit;       // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
-  int brdf;        // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
+  int unlit;  // 1: shows `diffuse` as radiance, unshaded (a replace_all texture set it).
+  int brdf;   // RT_BRDF_* model of cl/material/brdf.h; 0, the original Blinn-Phong, is the default.
   int brdf_flags;  // RT_BRDF_NORMALIZED, RT_BRDF_KD_FRESNEL.
 } Material;
 
@@ -126,6 +126,18 @@ typedef struct TriangleNormals {
 #define RT_FLAG_CULL_BACK_FACES 1
 #define RT_FLAG_BACKGROUND_ON_SECONDARY_MISS 2
 #define RT_FLAG_FRESNEL_CHOICE 4  // Dielectrics follow one ray, chosen by Fresnel.
+// The camera's renderer (hw6 <Renderer>, per camera): the path tracer of
+// cl/integrator/path.h instead of the ray tree, and its <RendererParams>.
+#define RT_FLAG_PATH_TRACING 8
+#define RT_FLAG_NEXT_EVENT 16           // NextEventEstimation: sample the lights at each bounce.
+#define RT_FLAG_IMPORTANCE_SAMPLING 32  // ImportanceSampling: cosine/BRDF-shaped bounces.
+#define RT_FLAG_RUSSIAN_ROULETTE 64     // RussianRoulette: end paths by their throughput.
+// --russian-roulette unbiased: a path the roulette ends drops its last vertex's light.
+#define RT_FLAG_UNBIASED_ROULETTE 128
+// The bits set_camera sets per camera.
+#define RT_FLAG_PATH_MASK                                                    \
+  (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \
+   RT_FLAG_RUSSIAN_ROULETTE)
 
 typedef struct SceneHeader {
   Camera camera;

@@ -29,7 +29,13 @@ OptionTable<RenderOptions> make_device_table() {
               std::vector<std::pair<std::string, bool>>{{"split", false}, {"choose", true}},
               RT_FIELD(fresnel_choice),
               "split (as the course): follow both the reflected and the refracted ray; "
-              "choose: follow one, picked with the Fresnel probability");
+              "choose: follow one, picked with the Fresnel probability")
+      .choice("--russian-roulette",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"unbiased", true}},
+              RT_FIELD(unbiased_roulette),
+              "path tracing with RussianRoulette: course (as its reference images: a path the "
+              "roulette ends keeps its last vertex's light, which brightens the image); "
+              "unbiased: it drops it");
   t.section("Geometry and shading", Reach::kDevice)
       .flag("--cull-back-faces", RT_FIELD(cull_back_faces),
             "camera and reflected rays ignore triangles facing away (the course's hw1 images "

@@ -120,7 +120,7 @@ TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
       {"</Objects>",
        "<LightSphere id=\"2\"><Material>1</Material><Center>1</Center><Radius>1"
        "</Radius><Radiance>1 1 1</Radiance></LightSphere></Objects>"},
-      {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
+      {"<ImageName>", "<Renderer>PhotonMapping</Renderer><ImageName>"},
   };
   const char* names[] = {"SphericalDirectionalLight", "handedness", "LightSphere", "Renderer"};
   for (int i = 0; i < 4; ++i) {
