@@ -28,6 +28,7 @@
 
 #include "../camera.h"
 #include "../intersect.h"
+#include "../light/emission.h"
 #include "../material/material.h"
 #include "../surface.h"
 #include "direct_lighting.h"
@@ -63,12 +64,13 @@ typedef struct PathState {
   int specular;     // The last scattering was a delta lobe (the camera ray counts as one).
 } PathState;
 
-// Radiance the surface at s emits back along s->wo. Object lights (LightMesh,
-// LightSphere) plug in here; the point, spot, directional and area lights of this renderer
-// are not part of the geometry, so a path finds them only by light sampling.
-RT_DEVICE float3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s) {
-  (void)sd;
-  (void)s;
+// Radiance the surface at s emits back along s->wo: object lights (LightMesh,
+// LightSphere, cl/light/emission.h) on their emitting side. The point, spot, directional
+// and area lights of this renderer are not part of the geometry, so a path finds them
+// only by light sampling. s must not be face-forwarded yet.
+RT_DEVICE float3 SurfaceEmission(RT_PRIVATE const SceneData* sd,
+                                 RT_PRIVATE const SurfacePoint* s) {
+  if (RT_HAS(sd, RT_FEATURE_OBJECT_LIGHTS)) return EmittedRadiance(sd, s);
   return Vec3(0.0f);
 }
 

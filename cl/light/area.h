@@ -11,7 +11,10 @@ RT_DEVICE LightSample SampleAreaLight(RT_GLOBAL const Light* light,
   float3 q = light->position + light->edge1 * u.x + light->edge2 * u.y;
   LightSample ls = LightSampleTowards(ctx->p, q, light->emission * light->area);
   // Both faces emit, as the course's reference images show (cornellbox_area's ceiling).
-  ls.irradiance = ls.irradiance * fabs(Dot(light->normal, ls.wi));
+  float cos_light = fabs(Dot(light->normal, ls.wi));
+  ls.irradiance = ls.irradiance * cos_light;
+  float3 to_light = q - ctx->p;
+  if (cos_light > 0.0f) ls.pdf = Dot(to_light, to_light) / (light->area * cos_light);
   return ls;
 }
 

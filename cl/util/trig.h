@@ -1,6 +1,6 @@
 // Trigonometry, logarithm and exponential from additions, multiplications, divisions,
 // square roots and exact scalings only, so that both devices round every step alike
-// (library atan2/acos/sin/cos/pow differ in the last bit between OpenCL implementations
+// (library sin/cos/atan2/acos/pow differ in the last bit between OpenCL implementations
 // and glibc, and one differing bit sends a sampled path elsewhere).
 #ifndef RT_UTIL_TRIG_H
 #define RT_UTIL_TRIG_H
@@ -40,25 +40,21 @@ RT_DEVICE float AcosF(float c) {
   return Atan2F(sqrt((1.0f - c) * (1.0f + c)), c);
 }
 
-// sin and cos of 2 pi u for u in [0, 1), for sampling directions around an axis. u is
-// reduced exactly to r in [0, 1/8] of a quarter turn (u - q / 4 and 1/4 - r are exact in
-// float), where the Cephes sinf/cosf polynomials are accurate to about one float ulp.
+// sin and cos of 2 pi u, for u in [0, 1] (a uniform angle). u is reduced exactly to the
+// nearest quarter turn, leaving |x| <= pi/4, where the Cephes sinf and cosf polynomials
+// are accurate to about one float ulp; the quarter turn then swaps and negates them.
 RT_DEVICE void SinCos2Pi(float u, RT_PRIVATE float* s, RT_PRIVATE float* c) {
-  float quarter = floor(u * 4.0f);
-  float r = u - quarter * 0.25f;
-  int swap = r > 0.125f;
-  if (swap) r = 0.25f - r;
-  float x = r * (2.0f * RT_PI);
+  float v = 4.0f * u;
+  float q = floor(v + 0.5f);
+  float x = (v - q) * (RT_PI * 0.5f);
   float z = x * x;
   float sx = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * x + x;
-  float cx =
-      ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
-      0.5f * z + 1.0f;
-  float sq = swap ? cx : sx, cq = swap ? sx : cx;  // sin and cos of the quarter-turn angle.
-  int q = (int)quarter & 3;
-  *s = q == 0 ? sq : (q == 1 ? cq : (q == 2 ? -sq : -cq));
-  *c = q == 0 ? cq : (q == 1 ? -sq : (q == 2 ? -cq : sq));
-}
+  float cx = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) *
+                 z * z -
+             0.5f * z + 1.0f;
+  int quadrant = ((int)q) & 3;
+  *s = quadrant == 0 ? sx : (quadrant == 1 ? cx : (quadrant == 2 ? -sx : -cx));
+  *c = quadrant == 0 ? cx : (quadrant == 1 ? -sx : (quadrant == 2 ? -cx : sx));
 
 // ln(x) for finite x > 0: x = m 2^e exactly (frexp), then the Cephes logf polynomial.
 RT_DEVICE float LogF(float x) {
