@@ -55,6 +55,7 @@ RT_DEVICE void SinCos2Pi(float u, RT_PRIVATE float* s, RT_PRIVATE float* c) {
   int quadrant = ((int)q) & 3;
   *s = quadrant == 0 ? sx : (quadrant == 1 ? cx : (quadrant == 2 ? -sx : -cx));
   *c = quadrant == 0 ? cx : (quadrant == 1 ? -sx : (quadrant == 2 ? -cx : sx));
+}
 
 // ln(x) for finite x > 0: x = m 2^e exactly (frexp), then the Cephes logf polynomial.
 RT_DEVICE float LogF(float x) {
