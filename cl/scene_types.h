@@ -137,7 +137,7 @@ typedef struct TriangleNormals {
 // cl/integrator/path.h instead of the ray tree, and its <RendererParams>.
 #define RT_FLAG_PATH_TRACING 8
 #define RT_FLAG_NEXT_EVENT 16           // NextEventEstimation: sample the lights at each bounce.
-#define RT_FLAG_IMPORTANCE_SAMPLING 32  // ImportanceSampling: cosine/BRDF-shaped bounces.
+#define RT_FLAG_IMPORTANCE_SAMPLING 32  // ImportanceSampling: cosine-weighted bounces.
 #define RT_FLAG_RUSSIAN_ROULETTE 64     // RussianRoulette: end paths by their throughput.
 // --russian-roulette unbiased: a path the roulette ends drops its last vertex's light.
 #define RT_FLAG_UNBIASED_ROULETTE 128

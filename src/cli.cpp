@@ -34,8 +34,8 @@ OptionTable<RenderOptions> make_device_table() {
               std::vector<std::pair<std::string, bool>>{{"course", false}, {"unbiased", true}},
               RT_FIELD(unbiased_roulette),
               "path tracing with RussianRoulette: course (as its reference images: a path the "
-              "roulette ends keeps its last vertex's light, which brightens the image); "
-              "unbiased: it drops it");
+              "roulette ends keeps its last hit's light undivided, which brightens the image); "
+              "unbiased: pbrt-v4's (survival from the path's weight)");
   t.section("Geometry and shading", Reach::kDevice)
       .flag("--cull-back-faces", RT_FIELD(cull_back_faces),
             "camera and reflected rays ignore triangles facing away (the course's hw1 images "

@@ -7,8 +7,10 @@
 // without variance are checked to that rounding alone.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cl/material/brdf.h"
 #include "errors.h"
@@ -125,6 +127,71 @@ TEST(PathTracing, UnbiasedRouletteMatchesTheUntruncatedSeries) {
     double se = std::hypot(rr.standard_error, deep.standard_error);
     EXPECT_NEAR(rr.mean, deep.mean, 4.5 * se + 2e-4 * infinite) << what;
   }
+}
+
+rt::MeshDesc Square(double half, double z, bool facing_down) {
+  rt::MeshDesc m;
+  m.positions = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
+  m.triangles = facing_down ? std::vector<std::array<int, 3>>{{0, 2, 1}, {0, 3, 2}}
+                            : std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}};
+  return m;
+}
+
+// A floor of albedo a under a black square ceiling light (LightMesh) of half-size s at
+// height h, radiance Le, seen from above at the point below the light's centre. The floor
+// point receives E = 4 pi Le F(s, s, h), F the differential form factor to an s x s
+// rectangle over its corner, and reflects (a / pi) E; nothing else bounces back.
+constexpr double kLe = 30, kHalf = 1, kHeight = 1;
+
+double CeilingRadiance() {
+  double x = kHalf / kHeight, y = kHalf / kHeight;
+  double f = (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) +
+              y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y))) /
+             (2 * M_PI);
+  return kAlbedo / M_PI * 4 * M_PI * kLe * f;
+}
+
+rt::SceneDesc CeilingLight(int samples, int path_flags) {
+  rt::SceneDesc s;
+  s.max_depth = 3;
+  s.cameras.push_back(PointCamera({0, 0, 0.5}, samples, path_flags));
+  s.materials.push_back(Lambert(kAlbedo));
+  s.materials.push_back(Lambert(0));
+  s.meshes.push_back(Square(50, 0, false));
+  s.meshes.push_back(Square(kHalf, kHeight, true));
+  rt::ObjectDesc floor, light;
+  floor.mesh = 0;
+  light.mesh = 1;
+  light.material = 1;
+  light.emits = true;
+  light.radiance = {kLe, kLe, kLe};
+  s.objects = {floor, light};
+  return s;
+}
+
+// Paths that find the light by a bounce and light samples estimate the same radiance.
+TEST(PathTracing, NextEventEstimationAgreesWithBounces) {
+  for (int importance : {0, RT_FLAG_IMPORTANCE_SAMPLING}) {
+    std::string what = importance ? "importance" : "uniform";
+    ExpectMean(RenderOnePixel(CeilingLight(40000, importance)), CeilingRadiance(),
+               "bounces, " + what);
+    ExpectMean(RenderOnePixel(CeilingLight(40000, importance | RT_FLAG_NEXT_EVENT)),
+               CeilingRadiance(), "light samples, " + what);
+  }
+}
+
+// The course's roulette (path.h, RouletteSurvives): at the light (the second hit, q = the
+// floor's BRDF value a / pi) a path that dies keeps the emission and a surviving one
+// divides it by q, so the light counts (2 - a / pi) times; the unbiased roulette counts it
+// once.
+TEST(PathTracing, CourseRouletteCountsADyingPathsLight) {
+  const int flags = RT_FLAG_RUSSIAN_ROULETTE | RT_FLAG_IMPORTANCE_SAMPLING;
+  PixelStats course = RenderOnePixel(CeilingLight(40000, flags));
+  ExpectMean(course, CeilingRadiance() * (2 - kAlbedo / M_PI), "course roulette");
+  rt::RenderOptions unbiased;
+  unbiased.unbiased_roulette = true;
+  ExpectMean(RenderOnePixel(CeilingLight(40000, flags), unbiased), CeilingRadiance(),
+             "unbiased roulette");
 }
 
 // The sky furnace: a convex sphere of albedo a under a uniform background B (seen by rays

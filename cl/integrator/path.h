@@ -68,8 +68,7 @@ typedef struct PathState {
 // LightSphere, cl/light/emission.h) on their emitting side. The point, spot, directional
 // and area lights of this renderer are not part of the geometry, so a path finds them
 // only by light sampling. s must not be face-forwarded yet.
-RT_DEVICE float3 SurfaceEmission(RT_PRIVATE const SceneData* sd,
-                                 RT_PRIVATE const SurfacePoint* s) {
+RT_DEVICE float3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s) {
   if (RT_HAS(sd, RT_FEATURE_OBJECT_LIGHTS)) return EmittedRadiance(sd, s);
   return Vec3(0.0f);
 }

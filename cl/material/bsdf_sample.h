@@ -1,7 +1,6 @@
 // What sampling a material's scattering returns to the path tracer (pbrt-v4's
 // BSDFSample), and the sampling of the reflection model's non-specular part: uniformly over
-// the hemisphere, or in proportion to the model (cosine-weighted for the diffuse lobe, the
-// specular lobe of cl/material/brdf.h) with the camera's ImportanceSampling.
+// the hemisphere, or cosine-weighted with the camera's ImportanceSampling.
 #ifndef RT_MATERIAL_BSDF_SAMPLE_H
 #define RT_MATERIAL_BSDF_SAMPLE_H
 
@@ -73,19 +72,20 @@ RT_DEVICE float3 SampleUniformHemisphere(float3 n, float2 u) {
   return s * (sin_t * cos_phi) + t * (sin_t * sin_phi) + n * cos_t;
 }
 
-// A direction for the reflection model `b` at s (whose normals face s->wo) and its
-// solid-angle density: uniform over the hemisphere, or BrdfSample's mixture of the
-// cosine-weighted diffuse lobe and the specular lobe when `importance`. A density of 0
-// means a lost draw.
-RT_DEVICE float3 SampleReflectionDirection(RT_PRIVATE const BrdfParams* b,
-                                           RT_PRIVATE const SurfacePoint* s, float2 u,
+// A direction for the reflection model at s (whose normals face s->wo) and its
+// solid-angle density: uniform over the hemisphere, or cosine-weighted with `importance`,
+// as the specification asks ("cosine based sampling of the upper hemisphere") and the
+// course's references show: sampling the glass's Phong lobe in proportion to it
+// (BrdfSample) leaves 9.4 % black pixels in glass_importance against the reference's
+// 10.4 %, which moves its tone mapping.
+RT_DEVICE float3 SampleReflectionDirection(RT_PRIVATE const SurfacePoint* s, float2 u,
                                            int importance, RT_PRIVATE float* pdf) {
   if (!importance) {
     *pdf = 1.0f / (2.0f * RT_PI);
     return SampleUniformHemisphere(s->n, u);
   }
-  float3 wi;
-  BrdfSample(b, s->n, s->wo, u, &wi, pdf);
+  float3 wi = SampleCosineLobe(s->n, 1.0f, u);
+  *pdf = fmax(0.0f, Dot(wi, s->n)) * (1.0f / RT_PI);
   return wi;
 }
 

@@ -86,16 +86,15 @@ RT_DEVICE float ReflectionShare(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
   return g / (g + d);
 }
 
-// A direction of the reflection model drawn uniformly or, with `importance`, in
-// proportion to it (bsdf_sample.h), with weight f cos / pdf.
+// A direction of the reflection model drawn uniformly or, with `importance`,
+// cosine-weighted (bsdf_sample.h), with weight f cos / pdf.
 RT_DEVICE BsdfSample SampleReflectionLobe(RT_PRIVATE const SceneData* sd,
                                           RT_PRIVATE const Material* m,
                                           RT_PRIVATE const SurfacePoint* s, RaySampler rs,
                                           int importance) {
-  BrdfParams b = MaterialBrdf(m);
   float pdf;
   float3 wi =
-      SampleReflectionDirection(&b, s, RaySample2D(rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
+      SampleReflectionDirection(s, RaySample2D(rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
   float cos_i = Dot(wi, s->n);
   // A direction below the geometric surface would leak through it.
   if (!(pdf > 0.0f) || !(cos_i > 0.0f) || Dot(wi, s->ng) <= 0.0f) return NoBsdfSample();

@@ -49,9 +49,9 @@ RT_DEVICE void SinCos2Pi(float u, RT_PRIVATE float* s, RT_PRIVATE float* c) {
   float x = (v - q) * (RT_PI * 0.5f);
   float z = x * x;
   float sx = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * x + x;
-  float cx = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) *
-                 z * z -
-             0.5f * z + 1.0f;
+  float cx =
+      ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+      0.5f * z + 1.0f;
   int quadrant = ((int)q) & 3;
   *s = quadrant == 0 ? sx : (quadrant == 1 ? cx : (quadrant == 2 ? -sx : -cx));
   *c = quadrant == 0 ? cx : (quadrant == 1 ? -sx : (quadrant == 2 ? -cx : sx));
