@@ -258,7 +258,7 @@ TEST(PathTracing, BadRendererInputIsOneClearLine) {
        "</RendererParams>",
        "Camera id=1 > RendererParams: 'Importance' is not a path-tracing option"},
       {"<Renderer>PhotonMapping</Renderer>",
-       "Camera id=1 > Renderer: 'PhotonMapping' is not a supported renderer"},
+       "Camera id=1 > Renderer: 'PhotonMapping' is not supported"},
       {"<RendererParams>RussianRoulette</RendererParams>",
        "Camera id=1 > RendererParams: 'RussianRoulette' needs <Renderer>PathTracing"},
   };

@@ -144,7 +144,7 @@ void Loader::read_renderer(const XMLElement* c, CameraDesc* cam) const {
   name.erase(0, name.find_first_not_of(" \t\r\n"));
   name.erase(name.find_last_not_of(" \t\r\n") + 1);
   if (!name.empty() && name != "PathTracing")
-    fail_value(renderer, "is not a supported renderer (only PathTracing)");
+    fail_value(renderer, "is not supported (the only renderer is PathTracing)");
   cam->path_tracing = !name.empty();
   if (!params) return;
   std::istringstream words(text_of(params));
