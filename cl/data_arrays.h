@@ -24,9 +24,12 @@
   RT_DATA_ARRAY(TextureDesc, textures)               \
   RT_DATA_ARRAY(uint, texels)                        \
   RT_DATA_ARRAY(InstanceTextures, instance_textures) \
-  RT_DATA_ARRAY(TriangleUV, triangle_uvs)           \
+  RT_DATA_ARRAY(TriangleUV, triangle_uvs)            \
   RT_DATA_ARRAY(int, instance_lights)                \
-  RT_DATA_ARRAY(float, light_cdf)
+  RT_DATA_ARRAY(float, light_cdf)                    \
+  RT_DATA_ARRAY(float4, env_texels)                  \
+  RT_DATA_ARRAY(float, env_marginal_cdf)             \
+  RT_DATA_ARRAY(float, env_conditional_cdf)
 
 // Structs whose size both sides must agree on besides the arrays' element types: the
 // layout check (rt_sizes in cl/kernel.cl, scene_layout() on the host) covers all of them.

@@ -48,18 +48,24 @@ typedef struct Light {
   // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
   // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing. Sphere light:
   // param0 = |det| of the instance's object-to-world transform (its volume scale).
+  // Environment: param0 as for directional lights; param1, param2 = the map's width and
+  // height (whole numbers); area = the integral its importance-sampling density was built
+  // from (0: the map is black and sends nothing).
   float param0, param1, param2;
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;
   int type;
-  int index;  // Type-specific index (for example a texture or an emitting instance).
+  // Type-specific index (for example a texture or an emitting instance). Environment: its
+  // mapping, RT_ENV_LATLONG or RT_ENV_PROBE (cl/light/environment_map.h).
+  int index;
   // Mesh light: its triangles are triangles[first .. first + count - 1], and
   // light_cdf[cdf .. cdf + count - 1] their cumulative world-space areas over `area`.
   int first;
   int count;
   int cdf;
-  int pad0, pad1;
+  int variant;  // Type-specific choice. Environment: how it is sampled (RT_ENV_SAMPLE_*).
+  int pad1;
 } Light;
 
 #define RT_LENS_SQUARE 0
@@ -133,14 +139,17 @@ typedef struct TriangleNormals {
 #define RT_FLAG_CULL_BACK_FACES 1
 #define RT_FLAG_BACKGROUND_ON_SECONDARY_MISS 2
 #define RT_FLAG_FRESNEL_CHOICE 4  // Dielectrics follow one ray, chosen by Fresnel.
+// Sphere lights deliver L / pdf in world space; otherwise L times their object-space solid
+// angle, the course's convention (cl/light/sphere_light.h).
+#define RT_FLAG_EXACT_ELLIPSOID_LIGHTS 8
 // The camera's renderer (hw6 <Renderer>, per camera): the path tracer of
 // cl/integrator/path.h instead of the ray tree, and its <RendererParams>.
-#define RT_FLAG_PATH_TRACING 8
-#define RT_FLAG_NEXT_EVENT 16           // NextEventEstimation: sample the lights at each bounce.
-#define RT_FLAG_IMPORTANCE_SAMPLING 32  // ImportanceSampling: cosine-weighted bounces.
-#define RT_FLAG_RUSSIAN_ROULETTE 64     // RussianRoulette: end paths by their throughput.
+#define RT_FLAG_PATH_TRACING 16
+#define RT_FLAG_NEXT_EVENT 32           // NextEventEstimation: sample the lights at each bounce.
+#define RT_FLAG_IMPORTANCE_SAMPLING 64  // ImportanceSampling: cosine-weighted bounces.
+#define RT_FLAG_RUSSIAN_ROULETTE 128     // RussianRoulette: end paths by their throughput.
 // --russian-roulette unbiased: a path the roulette ends drops its last vertex's light.
-#define RT_FLAG_UNBIASED_ROULETTE 128
+#define RT_FLAG_UNBIASED_ROULETTE 256
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \
@@ -162,6 +171,7 @@ typedef struct SceneHeader {
   int filter;
   float filter_sigma;  // Gaussian filter's standard deviation, in pixels.
   int flags;
+  int environment;  // Index in the lights of the environment light (at most one), or -1.
 } SceneHeader;
 
 // The arrays of one scene, passed by pointer to every stage (compare Cycles'

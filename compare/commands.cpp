@@ -38,6 +38,14 @@ void describe(const char* label, const std::string& path, const rt::MomentImage&
               m.info.spp, m.info.seed, m.info.device.c_str());
 }
 
+// Both inputs, and `note` when their seeds are equal (`note_if_equal`) or when they differ.
+void describe_inputs(const std::vector<std::string>& files, const rt::MomentImage& a,
+                     const rt::MomentImage& b, bool note_if_equal, const char* note) {
+  describe("A", files[0], a);
+  describe("B", files[1], b);
+  if ((a.info.seed == b.info.seed) == note_if_equal) std::printf("  note: %s\n", note);
+}
+
 void write_family_maps(const CompareOptions& o, const char* prefix, const Family& f,
                        const Verdict& v) {
   if (o.out_dir.empty()) return;
@@ -62,12 +70,9 @@ int run_welch(int argc, char** argv) {
   rt::MomentImage ma = load(files[0]), mb = load(files[1]);
   check_testable(ma, mb, o.allow_weighted);
   std::printf("welch: per-cell Welch t-test, H0: equal expected radiance in every cell\n");
-  describe("A", files[0], ma);
-  describe("B", files[1], mb);
-  if (ma.info.seed == mb.info.seed)
-    std::printf(
-        "  note: equal seeds: the samples are correlated and this test loses power "
-        "(use `compare paired`)\n");
+  describe_inputs(files, ma, mb, true,
+                  "equal seeds: the samples are correlated and this test loses power "
+                  "(use `compare paired`)");
   Family f = welch_test(ma, mb, o.welch);
   return conclude(o, "welch", f);
 }
@@ -79,12 +84,9 @@ int run_paired(int argc, char** argv) {
   check_testable(ma, mb, true);
   const PairedOptions& po = o.paired;
   std::printf("paired: sign tests of per-pixel differences, H0: differences symmetric about 0\n");
-  describe("A", files[0], ma);
-  describe("B", files[1], mb);
-  if (ma.info.seed != mb.info.seed)
-    std::printf(
-        "  note: different seeds: still a valid test, but not the sensitive paired "
-        "one (render both with the same --seed)\n");
+  describe_inputs(files, ma, mb, false,
+                  "different seeds: still a valid test, but not the sensitive paired "
+                  "one (render both with the same --seed)");
   PairedFigures pf = paired_figures(ma, mb, po);
   std::printf(
       "  pixel-channels beyond float resolution %zu of %zu (%.3f %%, %zu positive), "
@@ -101,12 +103,9 @@ int run_exact(int argc, char** argv) {
   rt::MomentImage ma = load(files[0]), mb = load(files[1]);
   const ExactOptions& eo = o.exact;
   std::printf("exact: first-sample hits, H0: same ids, distances and normals within tolerance\n");
-  describe("A", files[0], ma);
-  describe("B", files[1], mb);
-  if (ma.info.seed != mb.info.seed)
-    std::printf(
-        "  note: different seeds: first samples are different rays unless the "
-        "scene has 1 spp and no randomness in the camera\n");
+  describe_inputs(files, ma, mb, false,
+                  "different seeds: first samples are different rays unless the "
+                  "scene has 1 spp and no randomness in the camera");
   ExactReport r = exact_test(ma, mb, eo);
   std::printf("  pixels %zu (%zu hits in both), hit/miss mismatches %zu, id mismatches %zu\n",
               r.pixels, r.hits, r.hit_mismatch, r.id_mismatch);

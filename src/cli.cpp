@@ -35,7 +35,14 @@ OptionTable<RenderOptions> make_device_table() {
               RT_FIELD(unbiased_roulette),
               "path tracing with RussianRoulette: course (as its reference images: a path the "
               "roulette ends keeps its last hit's light undivided, which brightens the image); "
-              "unbiased: pbrt-v4's (survival from the path's weight)");
+              "unbiased: pbrt-v4's (survival from the path's weight)")
+      .choice("--ellipsoid-lights",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"exact", true}},
+              RT_FIELD(exact_ellipsoid_lights),
+              "course: a LightSphere seen through a non-uniform scale lights a point by its "
+              "radiance times the solid angle the untransformed sphere subtends in object "
+              "space, as the course's images show; exact: by its true solid angle (spheres "
+              "agree either way)");
   t.section("Geometry and shading", Reach::kDevice)
       .flag("--cull-back-faces", RT_FIELD(cull_back_faces),
             "camera and reflected rays ignore triangles facing away (the course's hw1 images "

@@ -17,7 +17,7 @@ static_assert(sizeof(Light) == 128, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
 static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
-static_assert(sizeof(SceneHeader) == 192, "SceneHeader layout");
+static_assert(sizeof(SceneHeader) == 208, "SceneHeader layout");
 static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
 static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
@@ -83,9 +83,9 @@ std::vector<Light> tagged_lights(const SceneDesc& scene) {
   return out;
 }
 
-// A directional light's shadow segment runs from the shading point towards the light for
-// `distance`: twice the diagonal of the box around every object (at least 1) leaves the box
-// from any point inside it.
+// A directional (or environment) light's shadow segment runs from the shading point towards the
+// light for `distance`: twice the diagonal of the box around every object (at least 1) leaves the
+// box from any point inside it.
 void set_directional_distance(const std::vector<Aabb>& boxes, std::vector<Light>& lights) {
   Aabb world;
   for (const Aabb& b : boxes) world.grow(b);
@@ -94,7 +94,7 @@ void set_directional_distance(const std::vector<Aabb>& boxes, std::vector<Light>
     diagonal += (double(world.hi[a]) - world.lo[a]) * (double(world.hi[a]) - world.lo[a]);
   float distance = static_cast<float>(std::max(1.0, 2.0 * std::sqrt(diagonal)));
   for (Light& l : lights)
-    if (l.type == RT_LIGHT_DIRECTIONAL) l.param0 = distance;
+    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_ENVIRONMENT) l.param0 = distance;
 }
 
 }  // namespace
@@ -220,6 +220,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     f.instance_textures.push_back(unordered_textures[i]);
   }
   flatten_textures(scene, f);
+  flatten_environment(scene, f);
   flatten_object_lights(scene, instance_of_object, mesh_first, f);
   f.header.tlas_root = wide_top.root;
   f.stats.tlas_depth = wide_top.depth;
@@ -247,7 +248,8 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   h.flags = (options.cull_back_faces ? RT_FLAG_CULL_BACK_FACES : 0) |
             (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0) |
             (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0) |
-            (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0);
+            (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
+            (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0);
   f.fast_math = options.fast_math;
   f.stats.bvh_build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

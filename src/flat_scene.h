@@ -27,6 +27,7 @@ struct RenderOptions {
   bool use_scene_epsilon = true;  // Off: rely on the scale-aware offset alone.
   bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
   bool unbiased_roulette = false;  // Path tracing: RussianRoulette without the course's bias.
+  bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
   bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   StopRule stop;
   BvhOptions bvh;
@@ -62,6 +63,14 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
 // Appends the scene's images to flat.texels and a descriptor per TextureMap to
 // flat.textures (src/flat_textures.cpp).
 void flatten_textures(const SceneDesc& scene, FlatScene& flat);
+
+// Places the environment light's map and its sampling distributions in flat's arrays and
+// sets the light's sizes and the header's index (src/flat_environment.cpp).
+void flatten_environment(const SceneDesc& scene, FlatScene& flat);
+
+// The function importance sampling follows over `map`'s texels (row-major): luminance times
+// the solid angle per unit map area at the texel's centre (cl/light/environment_map.h).
+std::vector<double> environment_importance(const ImageF& map, int mapping);
 
 // Appends a light to flat.lights for every emitting object (LightMesh, LightSphere) and
 // fills flat.instance_lights and flat.light_cdf (src/flat_object_lights.cpp).

@@ -92,6 +92,8 @@ struct SceneDesc {
   std::vector<MeshDesc> meshes;
   std::vector<ObjectDesc> objects;
   std::vector<ImageF> images;  // Decoded texture images (those a TextureMap uses).
+  // The map of the environment light (SphericalDirectionalLight; width 0 without one).
+  ImageF environment_map;
   std::vector<TextureMapDesc> textures;
   int background_texture = -1;
   int degenerate_triangles = 0;  // Skipped at load time, reported by --stats.

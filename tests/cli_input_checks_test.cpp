@@ -113,14 +113,12 @@ TEST_F(CliInputChecks, NameTooLongForTheFileSystemRefusedBeforeRendering) {
 
 TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
   const std::pair<const char*, const char*> cases[] = {
-      {"<AmbientLight>25 25 25</AmbientLight>",
-       "<AmbientLight>25 25 25</AmbientLight><SphericalDirectionalLight id=\"1\"><ImageId>1"
-       "</ImageId></SphericalDirectionalLight>"},
+      {"<Objects>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><Objects>"},
       {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
       {"<VertexData>", "<VertexData binaryFile=\"vertices.bin\">"},
       {"<ImageName>", "<Renderer>PhotonMapping</Renderer><ImageName>"},
   };
-  const char* names[] = {"SphericalDirectionalLight", "handedness", "binaryFile", "Renderer"};
+  const char* names[] = {"ZeroBasedIndexing", "handedness", "binaryFile", "Renderer"};
   for (int i = 0; i < 4; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);
@@ -204,11 +202,7 @@ TEST_F(CliInputChecks, RepeatedIdOfAMaterialIsAnErrorOfASphereAWarning) {
 
 TEST_F(CliInputChecks, ForeignPlyFileIsNotQuoted) {
   write("secret.txt", "root:SECRET-HASH:0:0:root:/root:/bin/bash\nmore\n");
-  std::string scene =
-      write("s.xml",
-            replaced(kScene,
-                     "<Faces>\n                3 1 2\n                1 3 4\n            </Faces>",
-                     "<Faces plyFile=\"secret.txt\"/>"));
+  std::string scene = write("s.xml", tiny_scene_with_ply_mesh("secret.txt"));
   Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);
   expect_one_error_line(r);

@@ -183,11 +183,7 @@ TEST_F(CliBadInput, HugePlyFaceCountDoesNotHang) {
         "property float y\nproperty float z\nelement face 2147483647\n"
         "property list uchar int vertex_indices\nend_header\n" +
             std::string(3 * 12, '\0') + std::string("\x03\0\0\0\0\1\0\0\0\2\0\0\0", 13));
-  std::string scene =
-      write("s.xml",
-            replaced(kScene,
-                     "<Faces>\n                3 1 2\n                1 3 4\n            </Faces>",
-                     "<Faces plyFile=\"m.ply\"/>"));
+  std::string scene = write("s.xml", tiny_scene_with_ply_mesh("m.ply"));
   Outcome r = render(scene);
   EXPECT_EQ(r.code, 1);  // 124 would mean `timeout` had to kill it
   EXPECT_LT(r.seconds, 5);

@@ -12,6 +12,7 @@
 #include "cl/material/brdf.h"
 #include "errors.h"
 #include "scene.h"
+#include "support/test_scene.h"
 
 namespace rt {
 namespace {
@@ -37,15 +38,11 @@ struct Parts {
 };
 
 std::string Write(const Parts& p) {
-  std::string xml = kTemplate;
-  auto put = [&](const std::string& key, const std::string& value) {
-    xml.replace(xml.find(key), key.size(), value);
-  };
-  put("CAMERA", p.camera);
-  put("TONEMAP", p.tonemap);
-  put("LIGHTS", p.lights);
-  put("BRDFS", p.brdfs);
-  put("MATERIAL", p.material);
+  const std::string xml = test::edited(kTemplate, {{"CAMERA", p.camera},
+                                                   {"TONEMAP", p.tonemap},
+                                                   {"LIGHTS", p.lights},
+                                                   {"BRDFS", p.brdfs},
+                                                   {"MATERIAL", p.material}});
   std::string path = testing::TempDir() + "loader_hw56_" + std::to_string(getpid()) + ".xml";
   std::ofstream(path) << xml;
   return path;
@@ -59,16 +56,8 @@ SceneDesc Load(const Parts& p) {
 }
 
 void ExpectError(const Parts& p, const std::string& fragment) {
-  std::string path = Write(p);
-  try {
-    load_scene(path);
-    ADD_FAILURE() << "no error; expected '" << fragment << "'";
-  } catch (const InputError& e) {
-    std::string what = e.what();
-    EXPECT_EQ(what.rfind(path, 0), 0u) << what;
-    EXPECT_NE(what.find(fragment), std::string::npos) << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-  }
+  const std::string path = Write(p);
+  test::expect_load_error(path, {fragment});
   std::remove(path.c_str());
 }
 

@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "scene.h"
 #include "scene_schema.h"
+#include "support/test_scene.h"
 
 namespace rt {
 namespace {
@@ -30,10 +31,7 @@ const std::string kScene = R"(<Scene>
 )";
 
 std::string with(const std::string& from, const std::string& to) {
-  std::string s = kScene;
-  const size_t at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? s : s.replace(at, from.size(), to);
+  return test::replaced(kScene, from, to);
 }
 
 SceneDesc load(const std::string& xml, bool strict = false) {
@@ -42,31 +40,27 @@ SceneDesc load(const std::string& xml, bool strict = false) {
   return load_scene_text(xml, "s.xml", options);
 }
 
-// The message of the InputError `xml` must raise.
+// The message of the InputError `xml` must raise (one line, starting with "s.xml: ").
 std::string error_of(const std::string& xml, bool strict = false) {
-  try {
-    load(xml, strict);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "loaded without error";
-  return "";
+  LoadOptions options;
+  options.strict = strict;
+  return test::expect_load_text_error(xml, "s.xml", {}, options);
 }
 
 TEST(SceneSchema, UnsupportedElementsAndAttributeValuesAreErrors) {
-  EXPECT_NE(error_of(with("</Lights>",
-                          "<SphericalDirectionalLight id=\"2\"><ImageId>1</ImageId>"
-                          "</SphericalDirectionalLight></Lights>"))
-                .find("s.xml: Lights > SphericalDirectionalLight id=2: not supported (line 5)"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(with("<VertexData>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><VertexData>"))
+          .find("s.xml: ZeroBasedIndexing: not supported (line"),
+      std::string::npos);
   EXPECT_NE(error_of(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"))
                 .find("handedness=\"left\" (line 2) is not supported: the image would be mirrored"),
             std::string::npos);
   // Object lights are read, but not moving ones.
-  EXPECT_NE(error_of(with("</Objects>",
-                          "<LightMesh id=\"2\"><MotionBlur>1 0 0</MotionBlur></LightMesh></Objects>"))
-                .find("LightMesh id=2 > MotionBlur: not supported"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(with("</Objects>",
+                    "<LightMesh id=\"2\"><MotionBlur>1 0 0</MotionBlur></LightMesh></Objects>"))
+          .find("LightMesh id=2 > MotionBlur: not supported"),
+      std::string::npos);
   // Right-handed is what the renderer does; empty unsupported elements change nothing.
   SceneDesc s = load(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"right\">"));
   EXPECT_TRUE(s.warnings.empty());

@@ -11,6 +11,7 @@
 #include "image/read_ldr.h"
 #include "io/png_io.h"
 #include "scene.h"
+#include "support/test_scene.h"
 
 namespace rt {
 namespace {
@@ -43,51 +44,27 @@ const char* kTextured = R"(<Scene>
 </Scene>
 )";
 
-class TextureLoader : public ::testing::Test {
+class TextureLoader : public test::TempDirTest {
  protected:
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ =
-        fs::temp_directory_path() / ("rt_texture_" + std::to_string(getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    TempDirTest::SetUp();
     Image8 img;
     img.width = 2;
     img.height = 1;
     img.rgb = {10, 20, 30, 200, 210, 220};
     write_png((dir_ / "tex.png").string(), img);
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   // The template with `from` replaced by `to` (which must occur once), written out.
   std::string scene(const std::string& from = "", const std::string& to = "") {
-    std::string xml = kTextured;
-    if (!from.empty()) {
-      size_t at = xml.find(from);
-      EXPECT_NE(at, std::string::npos) << from;
-      EXPECT_EQ(xml.find(from, at + 1), std::string::npos) << from;
-      if (at != std::string::npos) xml.replace(at, from.size(), to);
-    }
-    fs::path p = dir_ / "scene.xml";
-    std::ofstream(p) << xml;
-    return p.string();
+    return write("scene.xml",
+                 from.empty() ? std::string(kTextured) : test::replaced(kTextured, from, to));
   }
 
   void expect_error(const std::string& from, const std::string& to,
                     std::initializer_list<std::string> parts) {
-    std::string path = scene(from, to);
-    try {
-      load_scene(path);
-      ADD_FAILURE() << "loaded: " << to;
-    } catch (const InputError& e) {
-      std::string msg = e.what();
-      EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-      EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
-      for (const auto& part : parts) EXPECT_NE(msg.find(part), std::string::npos) << msg;
-    }
+    test::expect_load_error(scene(from, to), parts);
   }
-
-  fs::path dir_;
 };
 
 TEST_F(TextureLoader, ReadsEveryElement) {

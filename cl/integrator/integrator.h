@@ -11,6 +11,7 @@
 #include "../material/material.h"
 #include "../surface.h"
 #include "direct_lighting.h"
+#include "escaped.h"
 #include "path.h"
 #include "primary_info.h"
 #include "ray_tree.h"
@@ -38,8 +39,8 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
     *rays += 1u;
     int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && task.depth == 0;
     if (!IntersectClosest(sd, task.ray, cull, &hit)) {
-      if (task.depth == 0 || (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0)
-        radiance += task.weight * Background(sd, pixel_uv);
+      if (EscapedRaySees(sd, task.depth))
+        radiance += task.weight * EscapedRadiance(sd, task.ray.direction, pixel_uv);
       continue;
     }
     SurfacePoint s = ComputeSurface(sd, task.ray, hit);

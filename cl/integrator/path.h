@@ -32,6 +32,7 @@
 #include "../material/material.h"
 #include "../surface.h"
 #include "direct_lighting.h"
+#include "escaped.h"
 #include "primary_info.h"
 
 #if RT_COMPILED(RT_FEATURE_PATH_TRACING)
@@ -70,14 +71,6 @@ typedef struct PathState {
 // only by light sampling. s must not be face-forwarded yet.
 RT_DEVICE float3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s) {
   if (RT_HAS(sd, RT_FEATURE_OBJECT_LIGHTS)) return EmittedRadiance(sd, s);
-  return Vec3(0.0f);
-}
-
-// Radiance a path escaping the scene brings back: the background for camera rays, and
-// for the others with --background-on-secondary-miss, as in the ray tree.
-RT_DEVICE float3 EscapedRadiance(RT_PRIVATE const SceneData* sd, int bounce, float2 pixel_uv) {
-  if (bounce == 0 || (sd->header->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0)
-    return Background(sd, pixel_uv);
   return Vec3(0.0f);
 }
 
@@ -148,7 +141,11 @@ RT_DEVICE float3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera
     int cull = (flags & RT_FLAG_CULL_BACK_FACES) != 0 && p.bounce == 0;
     int alive = IntersectClosest(sd, p.ray, cull, &hit);
     if (!alive) {
-      radiance += p.weight * EscapedRadiance(sd, p.bounce, pixel_uv);
+      // With next-event estimation the environment light was sampled at the hit before,
+      // unless the path left by a delta lobe (as for emission at hits).
+      int sampled = nee && !p.specular && RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && h->environment >= 0;
+      if (EscapedRaySees(sd, p.bounce) && !sampled)
+        radiance += p.weight * EscapedRadiance(sd, p.ray.direction, pixel_uv);
     } else {
       SurfacePoint s = ComputeSurface(sd, p.ray, hit);
       if (p.bounce == 0) RecordPrimaryHit(info, hit, s.n);

@@ -8,6 +8,7 @@
 #include "../sampler.h"
 #include "area.h"
 #include "directional.h"
+#include "environment.h"
 #include "mesh_light.h"
 #include "point.h"
 #include "sphere_light.h"
@@ -32,6 +33,8 @@ RT_DEVICE LightSample SampleLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL cons
     return SampleMeshLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   if (RT_HAS(sd, RT_LIGHT_SPHERE) && light->type == RT_LIGHT_SPHERE)
     return SampleSphereLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
+  if (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && light->type == RT_LIGHT_ENVIRONMENT)
+    return SampleEnvironmentLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   LightSample none = LightSampleTowards(ctx->p, ctx->p, Vec3(0.0f));  // Not valid.
   return none;
 }

@@ -1,4 +1,4 @@
-// Lights: ambient, point, area, directional, spot.
+// Lights: ambient, point, area, directional, spot (environment: environment.cpp).
 #include <tinyxml2.h>
 
 #include <cctype>
@@ -94,6 +94,8 @@ void Loader::read_lights(const XMLElement* scene) {
       s.param1 = static_cast<float>(std::cos(coverage * M_PI / 360.0));
       s.param0 = static_cast<float>(std::cos(falloff * M_PI / 360.0));
       scene_.lights.push_back(s);
+    } else if (name == "SphericalDirectionalLight") {
+      read_environment_light(l, scene);
     }  // Other kinds were reported by check_scene_structure.
   }
 }

@@ -58,6 +58,7 @@ class Loader {
   void read_tonemap(const XMLElement* tm, CameraDesc* cam) const;
   void read_renderer(const XMLElement* camera, CameraDesc* cam) const;
   void read_lights(const XMLElement* scene);
+  void read_environment_light(const XMLElement* light, const XMLElement* scene);
   void read_brdfs(const XMLElement* scene);
   void read_materials(const XMLElement* scene);
   void read_transformations(const XMLElement* scene);

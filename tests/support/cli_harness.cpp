@@ -19,71 +19,10 @@ namespace rt::test {
 
 namespace fs = std::filesystem;
 
-const char* const kTinyScene = R"(<Scene>
-    <BackgroundColor>0 0 0</BackgroundColor>
-    <Cameras>
-        <Camera id="1">
-            <Position>0 0 0</Position>
-            <Gaze>0 0 -1</Gaze>
-            <Up>0 1 0</Up>
-            <NearPlane>-1 1 -0.5 0.5</NearPlane>
-            <NearDistance>1</NearDistance>
-            <ImageResolution>16 8</ImageResolution>
-            <ImageName>simple.png</ImageName>
-        </Camera>
-    </Cameras>
-    <Lights>
-        <AmbientLight>25 25 25</AmbientLight>
-        <PointLight id="1">
-            <Position>0 0 0</Position>
-            <Intensity>1000 1000 1000</Intensity>
-        </PointLight>
-    </Lights>
-    <Materials>
-        <Material id="1">
-            <AmbientReflectance>1 1 1</AmbientReflectance>
-            <DiffuseReflectance>1 1 1</DiffuseReflectance>
-        </Material>
-    </Materials>
-    <VertexData>
-        -0.5 0.5 -2
-        -0.5 -0.5 -2
-        0.5 -0.5 -2
-        0.5 0.5 -2
-    </VertexData>
-    <Objects>
-        <Mesh id="1">
-            <Material>1</Material>
-            <Faces>
-                3 1 2
-                1 3 4
-            </Faces>
-        </Mesh>
-        <Sphere id="1">
-            <Material>1</Material>
-            <Center>4</Center>
-            <Radius>0.3</Radius>
-        </Sphere>
-    </Objects>
-</Scene>
-)";
-
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  size_t at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
-
 std::string quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 // One line: exactly one newline, at the end, after the "raytracer: error: " prefix.
@@ -95,18 +34,9 @@ void expect_one_error_line(const Outcome& r) {
 }
 
 void CliFixture::SetUp() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  dir_ = fs::temp_directory_path() / ("rt_cli_" + std::to_string(getpid()) + "_" + info->name());
-  fs::remove_all(dir_);
+  TempDirTest::SetUp();
   fs::create_directories(dir_ / "out");
   out_ = (dir_ / "out").string();
-}
-void CliFixture::TearDown() { fs::remove_all(dir_); }
-
-std::string CliFixture::write(const std::string& name, const std::string& text) {
-  fs::path p = dir_ / name;
-  std::ofstream(p, std::ios::binary) << text;
-  return p.string();
 }
 
 Outcome CliFixture::run(const std::string& args, const std::string& env) {

@@ -1,5 +1,5 @@
-// Running the built raytracer executable from a test: a tiny scene, a fixture with its own
-// temporary directory, and the outcome of a run (exit status, stdout, stderr).
+// Running the built raytracer executable from a test: a fixture with its own temporary
+// directory (the scene it renders is usually kTinyScene), and the outcome of a run.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,18 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "support/test_scene.h"
+
 namespace rt::test {
 
-// A tiny scene (16 x 8 pixels, two triangles and a sphere) that renders in milliseconds;
-// its image is simple.png.
-extern const char* const kTinyScene;
-
-// `s` with the first `from` replaced by `to` (a test failure when `from` is absent).
-std::string replaced(std::string s, const std::string& from, const std::string& to);
 // `s` quoted for sh.
 std::string quote(const std::string& s);
-// The bytes of a file ("" when unreadable).
-std::string slurp(const std::filesystem::path& p);
 
 struct Outcome {
   int code = -1;  // Exit status; 124 when `timeout` killed it; 128 + n for signal n.
@@ -32,13 +26,10 @@ struct Outcome {
 // One line: exactly one newline, at the end, after the "raytracer: error: " prefix.
 void expect_one_error_line(const Outcome& r);
 
-class CliFixture : public ::testing::Test {
+class CliFixture : public TempDirTest {
  protected:
   void SetUp() override;
-  void TearDown() override;
 
-  // Writes `text` to `name` in the test's directory; returns its path.
-  std::string write(const std::string& name, const std::string& text);
   // Runs the raytracer with `args` (already quoted), stdin empty, stdout and stderr captured
   // to files (so neither is a terminal), under a 10 s timeout; `env` prefixes the command.
   Outcome run(const std::string& args, const std::string& env = "");
@@ -52,8 +43,7 @@ class CliFixture : public ::testing::Test {
   // The names in the output directory.
   std::vector<std::string> output_files() const;
 
-  std::filesystem::path dir_;
-  std::string out_;
+  std::string out_;  // The output directory, dir_/out.
 };
 
 }  // namespace rt::test

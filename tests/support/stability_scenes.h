@@ -1,6 +1,6 @@
-// Scene building and render helpers for tests/stability_test.cpp: scenes are assembled in
-// code (no XML), rendered on the CPU reference and on the OpenCL kernel, and compared
-// with the statistics of compare/.
+// Scene building for the stability tests (tests/stability/): scenes are assembled in code
+// (no XML) from materials, quads, boxes, spheres, lights and cameras, and can be mapped by
+// x -> s x + t to test scale and translation invariance.
 #pragma once
 
 #include <array>
@@ -214,6 +214,66 @@ inline rt::SceneDesc MapScene(const rt::SceneDesc& in, double s, Vec3d t) {
     c.focus_distance *= s;
   }
   return o;
+}
+
+// A small stage (about 12 units across) with every kind of secondary ray: shadows from a
+// point light and an area light, a mirror sphere, a glass sphere with absorption, a thin
+// panel 0.1 above the floor, a box standing on the floor and a moving sphere (the scale and
+// the camera tests).
+
+constexpr int kStageSize = 40;
+constexpr int kStageSpp = 24;
+
+inline rt::SceneDesc Stage() {
+  Builder b;
+  rt::SceneDesc& s = b.scene();
+  s.background = V(12, 18, 30);
+  s.ambient = Gray(6);
+  int floor = b.material(Plain(Gray(0.7), Gray(0.1), 10, Gray(1)));
+  int wall = b.material(Plain(V(0.5, 0.6, 0.8), {}, 1, Gray(1)));
+  int red = b.material(Plain(V(0.8, 0.2, 0.2), Gray(0.4), 40, Gray(1)));
+  int green = b.material(Plain(V(0.2, 0.8, 0.3), {}, 1, Gray(1)));
+  int mirror = b.material(Mirror(Gray(0.85)));
+  int glass = b.material(Dielectric(1.5, V(0.3, 0.1, 0.05)));
+  b.quad(V(-6, 0, -4), V(-6, 0, 6), V(6, 0, 6), V(6, 0, -4), floor);
+  b.quad(V(-6, 0, -4), V(6, 0, -4), V(6, 6, -4), V(-6, 6, -4), wall);
+  b.sphere(V(-1.6, 1, -0.8), 1, red);
+  b.sphere(V(1.9, 0.8, -1.8), 0.8, mirror);
+  b.sphere(V(0.2, 0.55, 1.6), 0.55, glass);
+  b.quad(V(1.2, 0.1, 0.6), V(1.2, 0.1, 2.4), V(3.0, 0.1, 2.4), V(3.0, 0.1, 0.6), green);
+  b.box(V(-3.6, 0, 0.6), V(-2.9, 0.9, 1.3), green);
+  b.sphere(V(-0.4, 0.3, 3.2), 0.3, red, V(0.8, 0, 0));
+  b.point_light(V(2.5, 5.5, 4), V(14000, 13000, 12000));
+  b.area_light(V(-2.6, 4.6, -0.4), V(1.2, 0, 0), V(0, 0, 1.2), V(700, 700, 650));
+  b.camera(V(0, 3.2, 8.5), V(0, 0.7, 0), V(0, 1, 0), 0.55, 0.55, 1, kStageSize, kStageSize);
+  return s;
+}
+
+// An ambient-only material under an ambient light of kAmbient: a sample that hits gives
+// exactly kAmbient, one that slips through the black background (coverage tests).
+
+constexpr double kAmbient = 100;
+
+inline Material AmbientOnly() { return Plain({}, {}, 1, Gray(1)); }
+
+// Mirror, conductor and glass spheres of one roughness over a floor, with a point and an
+// area light, so random numbers matter (the roughness, lens and light-value tests).
+inline rt::SceneDesc GlossyScene(double roughness) {
+  Builder b;
+  b.scene().ambient = Gray(4);
+  b.scene().background = V(10, 12, 20);
+  int floor = b.material(Plain(V(0.6, 0.6, 0.5), Gray(0.2), 15, Gray(1)));
+  int mirror = b.material(Mirror(V(0.9, 0.8, 0.7), roughness));
+  int conductor = b.material(Conductor(0.2, 3.0, roughness));
+  int glass = b.material(Dielectric(1.5, V(0.2, 0.1, 0.05), roughness));
+  b.quad(V(-5, 0, -5), V(-5, 0, 5), V(5, 0, 5), V(5, 0, -5), floor);
+  b.sphere(V(-1.2, 0.6, 0), 0.6, mirror);
+  b.sphere(V(0.2, 0.6, -0.8), 0.6, conductor);
+  b.sphere(V(1.2, 0.6, 0.6), 0.6, glass);
+  b.point_light(V(2, 4, 3), Gray(3000));
+  b.area_light(V(-1, 3, -1), V(1, 0, 0), V(0, 0, 1), Gray(400));
+  b.camera(V(0, 2, 5), V(0, 0.5, 0), V(0, 1, 0), 0.5, 0.4, 1, 40, 32);
+  return b.scene();
 }
 
 }  // namespace stab
