@@ -26,7 +26,9 @@
 #define RT_FEATURE_MESH_LIGHTS (1 << 17)    // LightMesh: an emitting triangle mesh (hw6).
 #define RT_FEATURE_SPHERE_LIGHTS (1 << 18)  // LightSphere: an emitting sphere or ellipsoid (hw6).
 #define RT_FEATURE_ENVIRONMENT_LIGHT (1 << 19)  // SphericalDirectionalLight (an HDR environment).
-#define RT_FEATURE_ALL ((1 << 20) - 1)
+// A camera with <Renderer>PathTracing (integrator/path.h).
+#define RT_FEATURE_PATH_TRACING (1 << 20)
+#define RT_FEATURE_ALL ((1 << 21) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in
@@ -51,9 +53,13 @@
 #endif
 // A compile-time constant in the kernel: untaken branches vanish.
 #define RT_HAS(scene, feature) ((RT_KERNEL_FEATURES & (feature)) != 0)
+// For #if around whole functions that only one feature calls: the kernel compiles them
+// only when the scene needs the feature.
+#define RT_COMPILED(feature) ((RT_KERNEL_FEATURES & (feature)) != 0)
 #else
 // A run-time test on the CPU, against the bits stored in the scene header.
 #define RT_HAS(scene, feature) (((scene)->header->features & (feature)) != 0)
+#define RT_COMPILED(feature) 1
 #endif
 
 #endif  // RT_FEATURES_H

@@ -146,6 +146,18 @@ typedef struct TriangleNormals {
 // Sphere lights deliver L / pdf in world space; otherwise L times their object-space solid
 // angle, the course's convention (cl/light/sphere_light.h).
 #define RT_FLAG_EXACT_ELLIPSOID_LIGHTS 8
+// The camera's renderer (hw6 <Renderer>, per camera): the path tracer of
+// cl/integrator/path.h instead of the ray tree, and its <RendererParams>.
+#define RT_FLAG_PATH_TRACING 16
+#define RT_FLAG_NEXT_EVENT 32           // NextEventEstimation: sample the lights at each bounce.
+#define RT_FLAG_IMPORTANCE_SAMPLING 64  // ImportanceSampling: cosine-weighted bounces.
+#define RT_FLAG_RUSSIAN_ROULETTE 128     // RussianRoulette: end paths by their throughput.
+// --russian-roulette unbiased: a path the roulette ends drops its last vertex's light.
+#define RT_FLAG_UNBIASED_ROULETTE 256
+// The bits set_camera sets per camera.
+#define RT_FLAG_PATH_MASK                                                    \
+  (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \
+   RT_FLAG_RUSSIAN_ROULETTE)
 
 typedef struct SceneHeader {
   Camera camera;

@@ -30,6 +30,12 @@ OptionTable<RenderOptions> make_device_table() {
               RT_FIELD(fresnel_choice),
               "split (as the course): follow both the reflected and the refracted ray; "
               "choose: follow one, picked with the Fresnel probability")
+      .choice("--russian-roulette",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"unbiased", true}},
+              RT_FIELD(unbiased_roulette),
+              "path tracing with RussianRoulette: course (as its reference images: a path the "
+              "roulette ends keeps its last hit's light undivided, which brightens the image); "
+              "unbiased: pbrt-v4's (survival from the path's weight)")
       .choice("--ellipsoid-lights",
               std::vector<std::pair<std::string, bool>>{{"course", false}, {"exact", true}},
               RT_FIELD(exact_ellipsoid_lights),

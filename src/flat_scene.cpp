@@ -137,6 +137,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   h.flags = (options.cull_back_faces ? RT_FLAG_CULL_BACK_FACES : 0) |
             (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0) |
             (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0) |
+            (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
             (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0);
   f.fast_math = options.fast_math;
   f.stats.bvh_build_ms =
@@ -172,6 +173,8 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
   cam.samples = options.spp > 0 ? options.spp : c.samples;
   int root = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cam.samples))));
   cam.strata = root * root == cam.samples ? root : 0;
+  flat.header.flags = (flat.header.flags & ~RT_FLAG_PATH_MASK) |
+                      (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0);
   flat.header.features = scene_features(scene, camera, options);
 }
 
@@ -205,6 +208,7 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
   const CameraDesc& c = scene.cameras[camera];
   if (c.aperture > 0) f |= RT_FEATURE_DEPTH_OF_FIELD;
   if ((options.spp > 0 ? options.spp : c.samples) > 1) f |= RT_FEATURE_MULTISAMPLE;
+  if (c.path_tracing) f |= RT_FEATURE_PATH_TRACING;
   return f;
 }
 

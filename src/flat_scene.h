@@ -27,6 +27,7 @@ struct RenderOptions {
   int lens = RT_LENS_SQUARE;
   bool use_scene_epsilon = true;  // Off: rely on the scale-aware offset alone.
   bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
+  bool unbiased_roulette = false;  // Path tracing: RussianRoulette without the course's bias.
   bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
   bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for

@@ -42,6 +42,10 @@ struct CameraDesc {
   // <Tonemap>: the film is written as HDR and tone mapped to the 8-bit image beside it.
   bool tonemap = false;
   PhotographicParams tonemap_params;
+  // <Renderer>PathTracing</Renderer>: the path tracer of cl/integrator/path.h, with the
+  // RT_FLAG_NEXT_EVENT / IMPORTANCE_SAMPLING / RUSSIAN_ROULETTE options of <RendererParams>.
+  bool path_tracing = false;
+  int path_flags = 0;
 };
 
 // A triangle mesh in its own object space; instances share it.

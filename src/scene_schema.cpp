@@ -113,8 +113,8 @@ const std::vector<Rule>& rules() {
       value("Tonemap", "TMOOptions"),
       value("Tonemap", "Saturation"),
       value("Tonemap", "Gamma"),
-      unsupported("Camera", "Renderer", "the ray tracer would replace this renderer"),
-      unsupported("Camera", "RendererParams", "the ray tracer would replace this renderer"),
+      value("Camera", "Renderer"),
+      value("Camera", "RendererParams"),
 
       value("Lights", "AmbientLight"),
       // hw4's sphere_perlin*.xml define two point lights with id 3; both shine.

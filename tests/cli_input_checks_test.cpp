@@ -116,7 +116,7 @@ TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
       {"<Objects>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><Objects>"},
       {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
       {"<VertexData>", "<VertexData binaryFile=\"vertices.bin\">"},
-      {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
+      {"<ImageName>", "<Renderer>PhotonMapping</Renderer><ImageName>"},
   };
   const char* names[] = {"ZeroBasedIndexing", "handedness", "binaryFile", "Renderer"};
   for (int i = 0; i < 4; ++i) {

@@ -26,18 +26,24 @@ RT_DEVICE float3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE con
   return EvaluateBsdf(sd, m, s->n, s->wo, ls.wi, ls.irradiance);
 }
 
-// Summed in the lights' array order (point lights, then area lights), which fixes the
-// last bit of the result. `rs` draws the area lights' samples.
+// l plus one sample of every light, summed in the lights' array order (point lights, then
+// area lights), which fixes the last bit of the result. `rs` draws the area lights'
+// samples. The path tracer's next-event estimation is this sum.
+RT_DEVICE float3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
+                                 RT_PRIVATE const Material* m, RaySampler rs, float3 l,
+                                 RT_PRIVATE uint* rays) {
+  LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
+  for (int i = 0; i < sd->header->num_lights; ++i)
+    l += ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);
+  return l;
+}
+
+// The ray tree's shading: ambient plus the lights.
 RT_DEVICE float3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
                                 RT_PRIVATE const Material* m, RaySampler rs,
                                 RT_PRIVATE uint* rays) {
-  RT_GLOBAL const SceneHeader* h = sd->header;
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return m->diffuse;
-  float3 l = m->ambient * h->ambient_light;
-  LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
-  for (int i = 0; i < h->num_lights; ++i)
-    l += ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);
-  return l;
+  return AddLightSamples(sd, s, m, rs, m->ambient * sd->header->ambient_light, rays);
 }
 
 #endif  // RT_INTEGRATOR_DIRECT_LIGHTING_H

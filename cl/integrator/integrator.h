@@ -1,6 +1,7 @@
-// The per-sample integrator: Whitted-style recursion (mirrors, conductors, dielectrics
+// The per-sample integrators: Whitted-style recursion (mirrors, conductors, dielectrics
 // with Fresnel and Beer's law) extended with the distribution effects of the course's
-// third assignment, over the explicit ray tree of ray_tree.h.
+// third assignment, over the explicit ray tree of ray_tree.h; and, for cameras that ask
+// for it, the path tracer of path.h.
 #ifndef RT_INTEGRATOR_H
 #define RT_INTEGRATOR_H
 
@@ -10,40 +11,10 @@
 #include "../material/material.h"
 #include "../surface.h"
 #include "direct_lighting.h"
+#include "escaped.h"
+#include "path.h"
+#include "primary_info.h"
 #include "ray_tree.h"
-
-// Deterministic facts about a pixel's first camera ray, for exact comparisons.
-typedef struct PrimaryInfo {
-  float t;
-  int instance;
-  int primitive;
-  float3 normal;
-} PrimaryInfo;
-
-RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 normal) {
-  info->t = hit.t;
-  info->instance = hit.instance;
-  info->primitive = hit.primitive;
-  info->normal = normal;
-}
-
-// Whether a ray of the tree at `depth` that leaves the scene sees anything: every ray sees
-// the environment light (the course's mirror and glass spheres reflect and refract it);
-// only camera rays see the background, unless --background-on-secondary-miss.
-RT_DEVICE int EscapedRaySees(RT_PRIVATE const SceneData* sd, int depth) {
-  RT_GLOBAL const SceneHeader* h = sd->header;
-  return (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && h->environment >= 0) || depth == 0 ||
-         (h->flags & RT_FLAG_BACKGROUND_ON_SECONDARY_MISS) != 0;
-}
-
-// What such a ray sees: the environment light, else the background.
-RT_DEVICE float3 EscapedRadiance(RT_PRIVATE const SceneData* sd, float3 direction,
-                                 float2 pixel_uv) {
-  RT_GLOBAL const SceneHeader* h = sd->header;
-  if (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && h->environment >= 0)
-    return EnvironmentRadiance(sd, &sd->lights[h->environment], direction);
-  return Background(sd, pixel_uv);
-}
 
 // Radiance along a camera ray through the film at pixel_uv (where a background texture is
 // looked up); *rays counts every ray cast (camera, secondary, shadow).
@@ -109,6 +80,10 @@ RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint
   // with the bilinear lookup's convention (texture/image_texture.h) an image of the film's
   // size is reproduced texel for texel, as in the course's galactica images.
   float2 pixel_uv = make_float2((float)x / (float)cam->width, (float)y / (float)cam->height);
+#if RT_COMPILED(RT_FEATURE_PATH_TRACING)
+  if (RT_HAS(sd, RT_FEATURE_PATH_TRACING) && (h->flags & RT_FLAG_PATH_TRACING) != 0)
+    return PathLi(sd, cs.key, cs.ray, pixel_uv, info, rays);
+#endif
   return Li(sd, cs.key, cs.ray, pixel_uv, info, rays);
 }
 

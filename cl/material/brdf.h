@@ -24,7 +24,8 @@
 #ifndef RT_BRDF_H
 #define RT_BRDF_H
 
-#include "fresnel.h"  // FrConductor.
+#include "../util/trig.h"  // SinCos2Pi, PowUnit.
+#include "fresnel.h"       // FrConductor.
 
 #define RT_BRDF_ORIGINAL_BLINN_PHONG 0
 #define RT_BRDF_ORIGINAL_PHONG 1
@@ -101,14 +102,17 @@ RT_DEVICE float CosineLobePdf(float cos_a, float e) {
   return cos_a > 0.0f ? (e + 1.0f) * (1.0f / (2.0f * RT_PI)) * PowF(cos_a, e) : 0.0f;
 }
 
-// A direction of the cos^e lobe around unit axis `a` from u in [0, 1)^2.
+// A direction of the cos^e lobe around unit axis `a` from u in [0, 1)^2. The root and the
+// angle come from util/trig.h, not the libraries, so both devices draw the same direction.
 RT_DEVICE float3 SampleCosineLobe(float3 a, float e, float2 u) {
-  float cos_t = pow(1.0f - u.x, 1.0f / (e + 1.0f));  // 1 - u keeps cos_t > 0.
+  // 1 - u keeps cos_t > 0; e = 1 is the cosine-weighted hemisphere.
+  float cos_t = e == 1.0f ? sqrt(1.0f - u.x) : PowUnit(1.0f - u.x, 1.0f / (e + 1.0f));
   float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
-  float phi = 2.0f * RT_PI * u.y;
+  float sin_phi, cos_phi;
+  SinCos2Pi(u.y, &sin_phi, &cos_phi);
   float3 s, t;
   CoordinateSystem(a, &s, &t);
-  return s * (sin_t * cos(phi)) + t * (sin_t * sin(phi)) + a * cos_t;
+  return s * (sin_t * cos_phi) + t * (sin_t * sin_phi) + a * cos_t;
 }
 
 // Solid-angle density of BrdfSample choosing wi.

@@ -6,15 +6,24 @@
 #include "../integrator/ray_tree.h"
 #include "../surface.h"
 #include "fresnel.h"
-#include "glossy.h"
+#include "mirror.h"
+
+RT_DEVICE float ConductorFresnel(RT_PRIVATE const Material* m, RT_PRIVATE const SurfacePoint* s) {
+  return FrConductor(fmax(Dot(s->n, s->wo), 0.0f), m->refraction_index, m->absorption_index);
+}
 
 RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
                                 RaySampler rs, RT_PRIVATE RayStack* stack) {
-  float fr = FrConductor(fmax(Dot(s->n, s->wo), 0.0f), m->refraction_index, m->absorption_index);
-  float3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
+  float fr = ConductorFresnel(m, s);
+  float3 r = MirrorDirection(sd, m, s, rs);
   PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * m->mirror * fr, task->medium,
                            RT_CHILD_REFLECTED, 0));
+}
+
+RT_DEVICE BsdfSample SampleConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                     RT_PRIVATE const SurfacePoint* s, RaySampler rs) {
+  return SpecularBsdfSample(MirrorDirection(sd, m, s, rs), m->mirror * ConductorFresnel(m, s), 0);
 }
 
 #endif  // RT_MATERIAL_CONDUCTOR_H

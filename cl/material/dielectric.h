@@ -1,43 +1,81 @@
 // Glass and water: exact dielectric Fresnel, refraction, and Beer-Lambert absorption
-// inside (applied by Li over the distance a ray travels with inside = 1).
+// inside (applied by the integrators over the distance a ray travels inside).
 #ifndef RT_MATERIAL_DIELECTRIC_H
 #define RT_MATERIAL_DIELECTRIC_H
 
 #include "../integrator/ray_tree.h"
 #include "../surface.h"
+#include "bsdf_sample.h"
 #include "fresnel.h"
 #include "glossy.h"
+#include "mirror.h"
+
+// The two directions light takes at a dielectric's surface point and their Fresnel split.
+typedef struct DielectricEvent {
+  float fr;  // Reflectance; 1 under total internal reflection.
+  float eta_i, eta_t, cos_o, cos_t;
+} DielectricEvent;
+
+// `s` faces the side the ray came from; s->front tells whether that is outside.
+RT_DEVICE DielectricEvent DielectricFresnel(RT_PRIVATE const Material* m,
+                                            RT_PRIVATE const SurfacePoint* s) {
+  DielectricEvent e;
+  e.cos_o = Dot(s->n, s->wo);
+  e.eta_i = s->front ? 1.0f : m->refraction_index;
+  e.eta_t = s->front ? m->refraction_index : 1.0f;
+  e.fr = FrDielectric(fmax(e.cos_o, 0.0f), e.eta_i, e.eta_t, &e.cos_t);
+  return e;
+}
+
+RT_DEVICE float3 DielectricRefraction(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                      RT_PRIVATE const SurfacePoint* s, DielectricEvent e,
+                                      RaySampler rs) {
+  // Roughness frosts the glass too: the course's images blur what is seen through it.
+  RaySampler frost = rs;
+  frost.key = HashCombine(rs.key, 3u);
+  float3 t = Refract(-s->wo, s->n, e.eta_i / e.eta_t, e.cos_o, e.cos_t);
+  return GlossyDirection(sd, m, t, frost);
+}
 
 // Either both rays are followed, weighted by Fresnel (the course's splitting), or one is
 // chosen with probability Fresnel (RT_FLAG_FRESNEL_CHOICE: unbiased, one ray per bounce).
-// `s` faces the side the ray came from; s->front tells whether that is outside.
 RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                  RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
                                  RaySampler rs, RT_PRIVATE RayStack* stack) {
   int front = s->front;
-  float cos_o = Dot(s->n, s->wo);
-  float eta_i = front ? 1.0f : m->refraction_index;
-  float eta_t = front ? m->refraction_index : 1.0f;
-  float cos_t;
-  float fr = FrDielectric(fmax(cos_o, 0.0f), eta_i, eta_t, &cos_t);
+  DielectricEvent e = DielectricFresnel(m, s);
+  float fr = e.fr;
   int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0;
-  float pick = choose ? RaySample1D(rs, 4u) : 0.0f;
+  float pick = choose ? RaySample1D(rs, RT_DIM_FRESNEL_CHOICE) : 0.0f;
   int do_reflect = !choose || pick < fr;
   int do_refract = fr < 1.0f && (!choose || pick >= fr);
   float3 w = task->weight;
   if (do_reflect) {
-    float3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
+    float3 r = MirrorDirection(sd, m, s, rs);
     PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), choose ? w : w * fr,
                              front ? Vec3(0.0f) : task->medium, RT_CHILD_REFLECTED, !front));
   }
   if (do_refract) {
-    // Roughness frosts the glass too: the course's images blur what is seen through it.
-    RaySampler frost = rs;
-    frost.key = HashCombine(rs.key, 3u);
-    float3 t = GlossyDirection(sd, m, Refract(-s->wo, s->n, eta_i / eta_t, cos_o, cos_t), frost);
+    float3 t = DielectricRefraction(sd, m, s, e, rs);
     PushRay(stack, ChildTask(task, SpawnRay(sd, s, t, 1), choose ? w : w * (1.0f - fr),
                              front ? m->absorption : Vec3(0.0f), RT_CHILD_REFRACTED, front));
   }
+}
+
+// One of the two rays for the path tracer: the reflected one (weight Fresnel) or the
+// refracted one (1 - Fresnel), both when it splits the path as the course's renderer
+// does; with `choose`, one picked with the Fresnel probability, of weight 1 (pbrt-v4's
+// DielectricBxDF::Sample_f). A ray of weight 0 (no refraction under total internal
+// reflection) is not valid.
+RT_DEVICE BsdfSample SampleDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                      RT_PRIVATE const SurfacePoint* s, RaySampler rs, int transmit,
+                                      int choose) {
+  DielectricEvent e = DielectricFresnel(m, s);
+  if (choose) transmit = RaySample1D(rs, RT_DIM_FRESNEL_CHOICE) >= e.fr;
+  float w = choose ? 1.0f : (transmit ? 1.0f - e.fr : e.fr);
+  if (!(w > 0.0f)) return NoBsdfSample();
+  float3 wi = transmit ? DielectricRefraction(sd, m, s, e, rs) : MirrorDirection(sd, m, s, rs);
+  return SpecularBsdfSample(wi, Vec3(w), transmit);
 }
 
 #endif  // RT_MATERIAL_DIELECTRIC_H

@@ -4,6 +4,7 @@
 #define RT_MATERIAL_FRESNEL_H
 
 #include "../util/math.h"
+#include "../util/trig.h"
 
 // Unpolarized Fresnel reflectance of a dielectric interface for light going from index
 // eta_i to eta_t; cos_i > 0 is the cosine on the incident side. Total internal
@@ -45,6 +46,14 @@ RT_DEVICE float3 Refract(float3 d, float3 n, float eta, float cos_i, float cos_t
 // Beer-Lambert attenuation over a path of length `distance` inside a medium.
 RT_DEVICE float3 BeerLambert(float3 absorption, float distance) {
   return Exp3(absorption * (-distance));
+}
+
+// The same with util/trig.h's exponential, which both devices round alike: the path
+// tracer's weights decide where paths go (roulette), so they must agree to the bit. The
+// ray tree keeps the library's, so that its images stay as they were.
+RT_DEVICE float3 BeerLambertPortable(float3 absorption, float distance) {
+  float3 a = absorption * (-distance);
+  return make_float3(ExpF(a.x), ExpF(a.y), ExpF(a.z));
 }
 
 #endif  // RT_MATERIAL_FRESNEL_H

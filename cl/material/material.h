@@ -5,12 +5,13 @@
 #ifndef RT_MATERIAL_H
 #define RT_MATERIAL_H
 
+#include "../texture/texturing.h"
 #include "blinn_phong.h"
 #include "brdf.h"
+#include "bsdf_sample.h"
 #include "conductor.h"
 #include "dielectric.h"
 #include "mirror.h"
-#include "../texture/texturing.h"
 
 // The parameters shading reads at this point, as a private copy: textures replace values
 // here (diffuse and specular from texels) and perturb s->n, and nothing downstream changes.
@@ -60,6 +61,89 @@ RT_DEVICE void Scatter(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material
     ScatterConductor(sd, m, s, task, rs, stack);
   else if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
     ScatterDielectric(sd, m, s, task, rs, stack);
+}
+
+// 1 for the materials whose scattering is a delta lobe (mirror, conductor, dielectric).
+RT_DEVICE int HasSpecularLobe(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m) {
+  int specular = IsTransmissive(sd, m);
+  if (RT_HAS(sd, RT_MATERIAL_MIRROR)) specular |= m->type == RT_MATERIAL_MIRROR;
+  if (RT_HAS(sd, RT_MATERIAL_CONDUCTOR)) specular |= m->type == RT_MATERIAL_CONDUCTOR;
+  return specular;
+}
+
+// The probability that the path tracer follows the reflection model (kd, ks: the part
+// that light sampling can reach) rather than the delta lobe. Mirrors, conductors and
+// dielectrics keep the course's Blinn-Phong or BRDF part beside their delta lobe, as the
+// ray tree shades them; the share is in proportion to the largest reflectance of each,
+// and 0 on the inner side of a dielectric, which no light reaches directly (as in Li).
+RT_DEVICE float ReflectionShare(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                RT_PRIVATE const SurfacePoint* s) {
+  if (!HasSpecularLobe(sd, m)) return 1.0f;
+  if (IsTransmissive(sd, m) && !s->front) return 0.0f;
+  float g = MaxComponent(m->diffuse) + MaxComponent(m->specular);
+  if (!(g > 0.0f)) return 0.0f;
+  float d = IsTransmissive(sd, m) ? 1.0f : MaxComponent(m->mirror);
+  return g / (g + d);
+}
+
+// A direction of the reflection model drawn uniformly or, with `importance`,
+// cosine-weighted (bsdf_sample.h), with weight f cos / pdf.
+RT_DEVICE BsdfSample SampleReflectionLobe(RT_PRIVATE const SceneData* sd,
+                                          RT_PRIVATE const Material* m,
+                                          RT_PRIVATE const SurfacePoint* s, RaySampler rs,
+                                          int importance) {
+  float pdf;
+  float3 wi =
+      SampleReflectionDirection(s, RaySample2D(rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
+  float cos_i = Dot(wi, s->n);
+  // A direction below the geometric surface would leak through it.
+  if (!(pdf > 0.0f) || !(cos_i > 0.0f) || Dot(wi, s->ng) <= 0.0f) return NoBsdfSample();
+  float3 f_cos = EvaluateBsdf(sd, m, s->n, s->wo, wi, Vec3(1.0f));
+  BsdfSample bs = NoBsdfSample();
+  bs.wi = wi;
+  bs.weight = f_cos * (1.0f / pdf);
+  bs.brdf = f_cos * (1.0f / cos_i);
+  bs.valid = 1;
+  return bs;
+}
+
+// Lobe `lobe` (RT_LOBE_*) of the material at s (normals facing s->wo) with its full
+// weight, for a path that splits into every lobe as the course's recursive renderer
+// does; not valid where the material has no such lobe.
+RT_DEVICE BsdfSample SampleBsdfLobe(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                    RT_PRIVATE const SurfacePoint* s, RaySampler rs, int importance,
+                                    int lobe) {
+  if (lobe == RT_LOBE_REFLECTION)
+    return ReflectionShare(sd, m, s) > 0.0f ? SampleReflectionLobe(sd, m, s, rs, importance)
+                                            : NoBsdfSample();
+  if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
+    return SampleDielectric(sd, m, s, rs, lobe == RT_LOBE_SPECULAR_TRANSMISSION, 0);
+  if (lobe == RT_LOBE_SPECULAR_TRANSMISSION) return NoBsdfSample();
+  if (RT_HAS(sd, RT_MATERIAL_MIRROR) && m->type == RT_MATERIAL_MIRROR)
+    return SampleMirror(sd, m, s, rs);
+  if (RT_HAS(sd, RT_MATERIAL_CONDUCTOR) && m->type == RT_MATERIAL_CONDUCTOR)
+    return SampleConductor(sd, m, s, rs);
+  return NoBsdfSample();
+}
+
+// One continuation of a path at s, pbrt-v4's BSDF::Sample_f: the delta lobes with
+// probability 1 - ReflectionShare (a dielectric's two chosen by Fresnel), else the
+// reflection model; the weight is divided by the probability of the choice.
+RT_DEVICE BsdfSample SampleBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                RT_PRIVATE const SurfacePoint* s, RaySampler rs, int importance) {
+  float share = ReflectionShare(sd, m, s);
+  BsdfSample bs;
+  if (share < 1.0f && (share <= 0.0f || RaySample1D(rs, RT_DIM_BSDF_LOBE) >= share)) {
+    if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
+      bs = SampleDielectric(sd, m, s, rs, 0, 1);
+    else
+      bs = SampleBsdfLobe(sd, m, s, rs, importance, RT_LOBE_SPECULAR_REFLECTION);
+    bs.weight = bs.weight * (1.0f / (1.0f - share));
+  } else {
+    bs = SampleReflectionLobe(sd, m, s, rs, importance);
+    bs.weight = bs.weight * (1.0f / share);
+  }
+  return bs;
 }
 
 #endif  // RT_MATERIAL_H

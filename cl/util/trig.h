@@ -1,6 +1,7 @@
-// Trigonometry from additions, multiplications, divisions and square roots only, so that
-// both devices round every step alike (library sin/cos/atan2/acos differ in the last bit
-// between OpenCL implementations and glibc).
+// Trigonometry, logarithm and exponential from additions, multiplications, divisions,
+// square roots and exact scalings only, so that both devices round every step alike
+// (library sin/cos/atan2/acos/pow differ in the last bit between OpenCL implementations
+// and glibc, and one differing bit sends a sampled path elsewhere).
 #ifndef RT_UTIL_TRIG_H
 #define RT_UTIL_TRIG_H
 
@@ -48,12 +49,67 @@ RT_DEVICE void SinCos2Pi(float u, RT_PRIVATE float* s, RT_PRIVATE float* c) {
   float x = (v - q) * (RT_PI * 0.5f);
   float z = x * x;
   float sx = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * x + x;
-  float cx = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) *
-                 z * z -
-             0.5f * z + 1.0f;
+  float cx =
+      ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+      0.5f * z + 1.0f;
   int quadrant = ((int)q) & 3;
   *s = quadrant == 0 ? sx : (quadrant == 1 ? cx : (quadrant == 2 ? -sx : -cx));
   *c = quadrant == 0 ? cx : (quadrant == 1 ? -sx : (quadrant == 2 ? -cx : sx));
+}
+
+// ln(x) for finite x > 0: x = m 2^e exactly (frexp), then the Cephes logf polynomial.
+RT_DEVICE float LogF(float x) {
+  int e;
+  float m = frexp(x, &e);  // m in [0.5, 1).
+  if (m < 0.70710678118654752f) {
+    e -= 1;
+    m = m + m - 1.0f;
+  } else {
+    m = m - 1.0f;
+  }
+  float z = m * m;
+  float y = ((((((((7.0376836292e-2f * m - 1.1514610310e-1f) * m + 1.1676998740e-1f) * m -
+                  1.2420140846e-1f) *
+                     m +
+                 1.4249322787e-1f) *
+                    m -
+                1.6668057665e-1f) *
+                   m +
+               2.0000714765e-1f) *
+                  m -
+              2.4999993993e-1f) *
+                 m +
+             3.3333331174e-1f) *
+            m * z;
+  float fe = (float)e;
+  y = y - 2.12194440e-4f * fe;
+  y = y - 0.5f * z;
+  return m + y + 0.693359375f * fe;
+}
+
+// e^x for |x| < 80: x = n ln 2 + r, the Cephes expf polynomial for e^r, then an exact
+// scaling by 2^n (ldexp).
+RT_DEVICE float ExpF(float x) {
+  float n = floor(1.44269504088896341f * x + 0.5f);
+  float r = x - n * 0.693359375f;
+  r = r + n * 2.12194440e-4f;
+  float z = r * r;
+  float p = (((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r +
+               4.1665795894e-2f) *
+                  r +
+              1.6666665459e-1f) *
+                 r +
+             5.0000001201e-1f) *
+                z +
+            r + 1.0f;
+  return ldexp(p, (int)n);
+}
+
+// x^y for x in (0, 1] and y >= 0 (0 for x = 0), to a few float ulps.
+RT_DEVICE float PowUnit(float x, float y) {
+  if (!(x > 0.0f)) return 0.0f;
+  float l = y * LogF(x);
+  return l < -80.0f ? 0.0f : ExpF(l);
 }
 
 #endif  // RT_UTIL_TRIG_H

@@ -108,6 +108,7 @@ void Loader::read_cameras(const XMLElement* scene) {
     if (cam.aperture > 0 && !(cam.focus_distance > 0))
       fail_value(child(c, "FocusDistance", true), "must be positive");
     if (const XMLElement* tm = child(c, "Tonemap", false)) read_tonemap(tm, &cam);
+    read_renderer(c, &cam);
     scene_.cameras.push_back(cam);
   }
   if (scene_.cameras.empty()) fail(nullptr, "no <Camera>: nothing to render");
@@ -131,6 +132,40 @@ void Loader::read_tonemap(const XMLElement* tm, CameraDesc* cam) const {
   if (!(cam->tonemap_params.saturation >= 0))
     fail_value(child(tm, "Saturation", true), "must not be negative");
   if (!(cam->tonemap_params.gamma > 0)) fail_value(child(tm, "Gamma", true), "must be positive");
+}
+
+// <Renderer>PathTracing</Renderer> and its <RendererParams> (hw6/SPEC.txt, section 3.3):
+// without them, or with an empty <Renderer>, the camera keeps the course's recursive ray
+// tracer. Parameters without PathTracing would silently change nothing, so they are errors.
+void Loader::read_renderer(const XMLElement* c, CameraDesc* cam) const {
+  const XMLElement* renderer = child(c, "Renderer", false);
+  const XMLElement* params = child(c, "RendererParams", false);
+  std::string name = renderer ? text_of(renderer) : std::string();
+  name.erase(0, name.find_first_not_of(" \t\r\n"));
+  name.erase(name.find_last_not_of(" \t\r\n") + 1);
+  if (!name.empty() && name != "PathTracing")
+    fail_value(renderer, "is not supported (the only renderer is PathTracing)");
+  cam->path_tracing = !name.empty();
+  if (!params) return;
+  std::istringstream words(text_of(params));
+  std::string word;
+  int flags = 0;
+  while (words >> word) {
+    if (word == "NextEventEstimation")
+      flags |= RT_FLAG_NEXT_EVENT;
+    else if (word == "ImportanceSampling")
+      flags |= RT_FLAG_IMPORTANCE_SAMPLING;
+    else if (word == "RussianRoulette")
+      flags |= RT_FLAG_RUSSIAN_ROULETTE;
+    else
+      fail(params, "'" + shorten(word) +
+                       "' is not a path-tracing option (NextEventEstimation, "
+                       "ImportanceSampling, RussianRoulette)");
+  }
+  if (flags != 0 && !cam->path_tracing)
+    fail(params, "'" + shorten(text_of(params)) +
+                     "' needs <Renderer>PathTracing</Renderer> in the same camera");
+  cam->path_flags = flags;
 }
 
 }  // namespace loader

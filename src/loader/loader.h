@@ -56,6 +56,7 @@ class Loader {
 
   void read_cameras(const XMLElement* scene);
   void read_tonemap(const XMLElement* tm, CameraDesc* cam) const;
+  void read_renderer(const XMLElement* camera, CameraDesc* cam) const;
   void read_lights(const XMLElement* scene);
   void read_environment_light(const XMLElement* light, const XMLElement* scene);
   void read_brdfs(const XMLElement* scene);
