@@ -15,7 +15,7 @@ namespace {
 // Appends the normalized running sums of f[0..n-1] to cdf: n + 1 values from 0 to exactly 1.
 // A row that is black everywhere gets even steps; it is never drawn (its marginal step is 0).
 // Returns the sum.
-double append_cdf(const double* f, int n, std::vector<float>& cdf) {
+double append_cdf(const double* f, int n, PageAlignedVector<float>& cdf) {
   double total = 0;
   for (int i = 0; i < n; ++i) total += f[i];
   double running = 0;

@@ -92,7 +92,7 @@ rt::SceneDesc LightFurnace(int depth, int samples, int path_flags) {
   s.materials.push_back(Lambert(kAlbedo));
   s.objects.push_back(Sphere(kRadius));
   PointLight light{};
-  light.position = make_float3(0, 0, 0);
+  light.position = rt::Vec3d{0, 0, 0};
   light.intensity = make_float3(kIntensity, kIntensity, kIntensity);
   s.point_lights.push_back(light);
   return s;
