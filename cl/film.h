@@ -3,17 +3,8 @@
 #ifndef RT_FILM_H
 #define RT_FILM_H
 
+#include "film_types.h"
 #include "integrator/integrator.h"
-
-// Per pixel: sum of weight * radiance (xyz) and of weights (w); sum of squared radiance
-// (xyz) and the sample count (w), from which compare/ forms per-pixel variances.
-typedef struct PixelAccum {
-  float4 sum;
-  float4 sum_sq;
-  uint rays;       // Rays cast for this pixel, for the rays/s figures.
-  uint nonfinite;  // Samples whose radiance was NaN or infinite; they are left out.
-  uint pad1, pad2;
-} PixelAccum;
 
 RT_DEVICE float4 AddFloat4(float4 a, float3 v, float w) {
   a.x += v.x;

@@ -5,19 +5,12 @@
 #define RT_INTEGRATOR_H
 
 #include "../camera.h"
+#include "../film_types.h"
 #include "../intersect.h"
 #include "../material/material.h"
 #include "../surface.h"
 #include "direct_lighting.h"
 #include "ray_tree.h"
-
-// Deterministic facts about a pixel's first camera ray, for exact comparisons.
-typedef struct PrimaryInfo {
-  float t;
-  int instance;
-  int primitive;
-  float3 normal;
-} PrimaryInfo;
 
 RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 normal) {
   info->t = hit.t;

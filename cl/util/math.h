@@ -4,7 +4,7 @@
 #ifndef RT_UTIL_MATH_H
 #define RT_UTIL_MATH_H
 
-#include "../compat.h"
+#include "real.h"
 
 #define RT_PI 3.14159265358979323846f
 #define RT_INFINITY 3.402823466e+38f
