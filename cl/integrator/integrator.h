@@ -12,7 +12,7 @@
 #include "direct_lighting.h"
 #include "ray_tree.h"
 
-RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 normal) {
+RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, real3 normal) {
   info->t = hit.t;
   info->instance = hit.instance;
   info->primitive = hit.primitive;
@@ -23,14 +23,14 @@ RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 no
 // looked up); *rays counts every ray cast (camera, secondary, shadow).
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
 // evaluate the material, add direct light, scatter.
-RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, float2 pixel_uv,
+RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, real2 pixel_uv,
                     RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
   RayStack stack;
   stack.size = 0;
   PushRay(&stack, MakeTask(camera_ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0));
-  float3 radiance = Vec3(0.0f);
+  real3 radiance = Vec3(0.0f);
   Hit none;
   none.t = RT_INFINITY;
   none.instance = -1;
@@ -66,29 +66,29 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
 
 // Camera sample `sample` of pixel (x, y): its radiance, and its reconstruction-filter
 // weight in *weight.
-RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint sample,
-                              RT_PRIVATE float* weight, RT_PRIVATE PrimaryInfo* info,
+RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint sample,
+                              RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
                               RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   RT_GLOBAL const Camera* cam = &h->camera;
   SampleKey sk = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples,
                                (uint)cam->strata, h->seed);
-  float2 film = make_float2(0.5f, 0.5f);
+  real2 film = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1) film = Stratified2D(sk, RT_DIM_PIXEL);
-  float2 lens = make_float2(0.5f, 0.5f);
+  real2 lens = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)) lens = Stratified2D(sk, RT_DIM_LENS);
-  float time = 0.0f;
+  real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR)) time = Stratified1D(sk, RT_DIM_TIME);
   *weight = 1.0f;
   if (h->filter == RT_FILTER_GAUSSIAN) {
-    float dx = film.x - 0.5f, dy = film.y - 0.5f;
+    real dx = film.x - 0.5f, dy = film.y - 0.5f;
     *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
-  Ray ray = GenerateCameraRay(sd, (float)x + film.x, (float)y + film.y, lens, time);
+  Ray ray = GenerateCameraRay(sd, (real)x + film.x, (real)y + film.y, lens, time);
   // The background image is stretched over the film, pixel (x, y) at (x, y) / resolution:
   // with the bilinear lookup's convention (texture/image_texture.h) an image of the film's
   // size is reproduced texel for texel, as in the course's galactica images.
-  float2 pixel_uv = make_float2((float)x / (float)cam->width, (float)y / (float)cam->height);
+  real2 pixel_uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
   return Li(sd, sk, ray, pixel_uv, info, rays);
 }
 

@@ -7,8 +7,8 @@
 #include "light_sample.h"
 
 RT_DEVICE LightSample SampleAreaLight(RT_GLOBAL const Light* light,
-                                      RT_PRIVATE const LightSampleContext* ctx, float2 u) {
-  float3 q = light->position + light->edge1 * u.x + light->edge2 * u.y;
+                                      RT_PRIVATE const LightSampleContext* ctx, real2 u) {
+  real3 q = light->position + light->edge1 * u.x + light->edge2 * u.y;
   LightSample ls = LightSampleTowards(ctx->p, q, light->emission * light->area);
   // Both faces emit, as the course's reference images show (cornellbox_area's ceiling).
   ls.irradiance = ls.irradiance * fabs(Dot(light->normal, ls.wi));

@@ -11,8 +11,8 @@
 RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
                                 RaySampler rs, RT_PRIVATE RayStack* stack) {
-  float fr = FrConductor(fmax(Dot(s->n, s->wo), 0.0f), m->refraction_index, m->absorption_index);
-  float3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
+  real fr = FrConductor(fmax(Dot(s->n, s->wo), 0.0f), m->refraction_index, m->absorption_index);
+  real3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
   PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * m->mirror * fr, task->medium,
                            RT_CHILD_REFLECTED, 0));
 }

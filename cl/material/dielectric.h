@@ -15,18 +15,18 @@ RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
                                  RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
                                  RaySampler rs, RT_PRIVATE RayStack* stack) {
   int front = s->front;
-  float cos_o = Dot(s->n, s->wo);
-  float eta_i = front ? 1.0f : m->refraction_index;
-  float eta_t = front ? m->refraction_index : 1.0f;
-  float cos_t;
-  float fr = FrDielectric(fmax(cos_o, 0.0f), eta_i, eta_t, &cos_t);
+  real cos_o = Dot(s->n, s->wo);
+  real eta_i = front ? 1.0f : m->refraction_index;
+  real eta_t = front ? m->refraction_index : 1.0f;
+  real cos_t;
+  real fr = FrDielectric(fmax(cos_o, 0.0f), eta_i, eta_t, &cos_t);
   int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0;
-  float pick = choose ? RaySample1D(rs, 4u) : 0.0f;
+  real pick = choose ? RaySample1D(rs, 4u) : 0.0f;
   int do_reflect = !choose || pick < fr;
   int do_refract = fr < 1.0f && (!choose || pick >= fr);
-  float3 w = task->weight;
+  real3 w = task->weight;
   if (do_reflect) {
-    float3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
+    real3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
     PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), choose ? w : w * fr,
                              front ? Vec3(0.0f) : task->medium, RT_CHILD_REFLECTED, !front));
   }
@@ -34,7 +34,7 @@ RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
     // Roughness frosts the glass too: the course's images blur what is seen through it.
     RaySampler frost = rs;
     frost.key = HashCombine(rs.key, 3u);
-    float3 t = GlossyDirection(sd, m, Refract(-s->wo, s->n, eta_i / eta_t, cos_o, cos_t), frost);
+    real3 t = GlossyDirection(sd, m, Refract(-s->wo, s->n, eta_i / eta_t, cos_o, cos_t), frost);
     PushRay(stack, ChildTask(task, SpawnRay(sd, s, t, 1), choose ? w : w * (1.0f - fr),
                              front ? m->absorption : Vec3(0.0f), RT_CHILD_REFRACTED, front));
   }

@@ -35,8 +35,8 @@ RT_DEVICE BrdfParams MaterialBrdf(RT_PRIVATE const Material* m) {
 
 // Light of irradiance e arriving from wi, reflected towards wo: the course's Blinn-Phong, or
 // the material's BRDF of assignment 6 (whose original Blinn-Phong is the same shading).
-RT_DEVICE float3 EvaluateBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                              float3 n, float3 wo, float3 wi, float3 e) {
+RT_DEVICE real3 EvaluateBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                              real3 n, real3 wo, real3 wi, real3 e) {
   if (RT_HAS(sd, RT_FEATURE_BRDF) && m->brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) {
     BrdfParams b = MaterialBrdf(m);
     return BrdfFCos(&b, n, wo, wi) * e;

@@ -9,8 +9,8 @@
 // atan(x) for x >= 0: the argument is reduced below tan(pi/8) (through pi/2 - atan(1/x)
 // and pi/4 + atan((x-1)/(x+1))), where an odd polynomial of degree 9 (the Cephes atanf
 // coefficients) is accurate to about one float ulp.
-RT_DEVICE float AtanPositive(float x) {
-  float base = 0.0f;
+RT_DEVICE real AtanPositive(real x) {
+  real base = 0.0f;
   if (x > 2.414213562373095f) {
     base = RT_PI * 0.5f;
     x = -1.0f / x;
@@ -18,23 +18,23 @@ RT_DEVICE float AtanPositive(float x) {
     base = RT_PI * 0.25f;
     x = (x - 1.0f) / (x + 1.0f);
   }
-  float z = x * x;
-  float poly =
+  real z = x * x;
+  real poly =
       ((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f;
   return base + (poly * z * x + x);
 }
 
 // The angle of (x, y) in (-pi, pi], as atan2(y, x).
-RT_DEVICE float Atan2F(float y, float x) {
-  float ax = fabs(x), ay = fabs(y);
+RT_DEVICE real Atan2F(real y, real x) {
+  real ax = fabs(x), ay = fabs(y);
   if (ax == 0.0f && ay == 0.0f) return 0.0f;
-  float a = ay <= ax ? AtanPositive(ay / ax) : RT_PI * 0.5f - AtanPositive(ax / ay);
+  real a = ay <= ax ? AtanPositive(ay / ax) : RT_PI * 0.5f - AtanPositive(ax / ay);
   if (x < 0.0f) a = RT_PI - a;
   return y < 0.0f ? -a : a;
 }
 
 // acos(c) for c in [-1, 1] (clamped), as the angle of (c, sqrt(1 - c^2)).
-RT_DEVICE float AcosF(float c) {
+RT_DEVICE real AcosF(real c) {
   c = fmin(1.0f, fmax(-1.0f, c));
   return Atan2F(sqrt((1.0f - c) * (1.0f + c)), c);
 }
