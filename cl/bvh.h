@@ -10,6 +10,7 @@
 #include "features.h"
 #include "shapes.h"
 #include "transform.h"
+#include "util/lanes.h"
 
 // Deep enough for a binned-SAH BVH of any mesh the build accepts: the builder caps the
 // binary depth of each level at RT_BVH_MAX_DEPTH (src/bvh_build.cpp checks it), collapsing
@@ -19,14 +20,6 @@
 #define RT_STACK_RETURN_TO_WORLD (-1)
 // No node index or leaf reference takes this value; it asks the loop to pop the stack.
 #define RT_BVH_POP (-2147483647 - 1)
-
-RT_DEVICE LaneFloat LaneSplat(real x) {
-#ifdef __OPENCL_C_VERSION__
-  return (LaneFloat)(x);
-#else
-  return x - LaneFloat{};  // Broadcasts x; x - (+0) is x for every x, -0 included.
-#endif
-}
 
 // The ray as the node test sees it: origin, reciprocal direction, and for each axis which
 // of a node's bounds (BvhNode.bounds) the ray meets first: the low face when the
@@ -55,24 +48,24 @@ RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
 // distance is enlarged by 2 * gamma(3) (pbrt-v4, Bounds3::IntersectP) so rounding never
 // culls a box the ray actually touches.
 RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r,
-                                      real tmax, RT_PRIVATE LaneFloat* tnear) {
+                                      real tmax, RT_PRIVATE LaneReal* tnear) {
   real3 o = r->o, inv_d = r->inv_d;
-  LaneFloat nx = (node->bounds[r->near_x] - o.x) * inv_d.x;
-  LaneFloat ny = (node->bounds[r->near_y] - o.y) * inv_d.y;
-  LaneFloat nz = (node->bounds[r->near_z] - o.z) * inv_d.z;
-  LaneFloat fx = (node->bounds[r->far_x] - o.x) * inv_d.x;
-  LaneFloat fy = (node->bounds[r->far_y] - o.y) * inv_d.y;
-  LaneFloat fz = (node->bounds[r->far_z] - o.z) * inv_d.z;
+  LaneReal nx = (LaneToReal(node->bounds[r->near_x]) - o.x) * inv_d.x;
+  LaneReal ny = (LaneToReal(node->bounds[r->near_y]) - o.y) * inv_d.y;
+  LaneReal nz = (LaneToReal(node->bounds[r->near_z]) - o.z) * inv_d.z;
+  LaneReal fx = (LaneToReal(node->bounds[r->far_x]) - o.x) * inv_d.x;
+  LaneReal fy = (LaneToReal(node->bounds[r->far_y]) - o.y) * inv_d.y;
+  LaneReal fz = (LaneToReal(node->bounds[r->far_z]) - o.z) * inv_d.z;
   // A ray in the plane of a face (zero direction component, origin on the face) gives
   // 0 * inf = NaN there. It stays inside that slab for every t, so the slab must constrain
   // nothing, and it does not: the other face gives -inf as an entry or +inf as an exit,
   // and a NaN enters LaneMax / LaneMin as the first operand, which they drop (they return
   // the second operand when either is NaN).
-  LaneFloat tn = LaneMax(nx, LaneMax(ny, LaneMax(nz, LaneSplat(0.0f))));
-  LaneFloat tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
+  LaneReal tn = LaneMax(nx, LaneMax(ny, LaneMax(nz, LaneSplat(0.0f))));
+  LaneReal tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
   tf = tf * 1.0000004f;
   *tnear = tn;
-  return tn <= tf;  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
+  return LaneMaskToInt(tn <= tf);  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
 }
 
 // Tests a node's children and returns the nearest child hit (RT_BVH_POP if none), pushing
@@ -80,11 +73,11 @@ RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE 
 // the same on both devices.
 RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, real tmax,
                             RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
-  LaneFloat tnear;
+  LaneReal tnear;
   LaneInt hits = IntersectChildBoxes(node, r, tmax, &tnear);
   real lane_t[RT_BVH_WIDTH];
   int lane_hit[RT_BVH_WIDTH], lane_child[RT_BVH_WIDTH];
-  LaneStoreF(tnear, lane_t);
+  LaneStoreR(tnear, lane_t);
   LaneStoreI(hits, lane_hit);
   LaneStoreI(node->child, lane_child);
   real sorted_t[RT_BVH_WIDTH];
@@ -108,7 +101,7 @@ RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const Node
 // World-space origin of an instance's ray at the ray's time.
 RT_DEVICE real3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
   real3 o = ray.origin;
-  if ((inst->flags & RT_INSTANCE_MOVING) != 0) o = o - inst->motion * ray.time;
+  if ((inst->flags & RT_INSTANCE_MOVING) != 0) o = o - ToReal3(inst->motion) * ray.time;
   return o;
 }
 
@@ -164,7 +157,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       for (int i = first; i < end; ++i) {
         RT_GLOBAL const Triangle* tri = &sd->triangles[i];
         real t, b1, b2;
-        if (IntersectTriangle(&tr, tri->v0, tri->v1, tri->v2, tmax, cull, &t, &b1, &b2)) {
+        if (IntersectTriangle(&tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull, &t, &b1, &b2)) {
           tmax = t;
           hit->t = t;
           hit->instance = instance;

@@ -20,7 +20,7 @@ RT_DEVICE real2 SampleConcentricDisk(real2 u) {
     r = oy;
     theta = (RT_PI / 2.0f) - (RT_PI / 4.0f) * (ox / oy);
   }
-  return make_real2(r * cos(theta), r * sin(theta));
+  return make_real2(r * CosR(theta), r * SinR(theta));
 }
 
 // The ray through film position (px, py) in pixels (x right, y down) at shutter time
@@ -32,20 +32,21 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real px, real py
   real sv = (cam->top - cam->bottom) * (py / (real)cam->height);
   // Relative to the camera: subtracting its position from an absolute film point would
   // cancel away the film's detail far from the origin.
-  real3 film = cam->u * (cam->left + su) + cam->v * (cam->top - sv) - cam->w * cam->near_distance;
+  real3 film = ToReal3(cam->u) * (cam->left + su) + ToReal3(cam->v) * (cam->top - sv) -
+               ToReal3(cam->w) * cam->near_distance;
   real3 dir = Normalize(film);
-  Ray ray = MakeRay(cam->position, dir, RT_INFINITY, time);
+  Ray ray = MakeRay(ToReal3(cam->position), dir, RT_INFINITY, time);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {
     // The focal plane lies focus_distance along the gaze; every lens point aims at where
     // the pinhole ray meets it.
-    real tfocus = cam->focus_distance / Dot(dir, -cam->w);
+    real tfocus = cam->focus_distance / Dot(dir, -ToReal3(cam->w));
     real2 l = make_real2(lens.x - 0.5f, lens.y - 0.5f);
     if (cam->lens == RT_LENS_DISK) {
       real2 disk = SampleConcentricDisk(lens);
       l = make_real2(0.5f * disk.x, 0.5f * disk.y);
     }
-    real3 lens_offset = (cam->u * l.x + cam->v * l.y) * cam->aperture;
-    ray.origin = cam->position + lens_offset;
+    real3 lens_offset = (ToReal3(cam->u) * l.x + ToReal3(cam->v) * l.y) * cam->aperture;
+    ray.origin = ToReal3(cam->position) + lens_offset;
     ray.direction = Normalize(dir * tfocus - lens_offset);
   }
   return ray;

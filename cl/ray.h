@@ -36,7 +36,7 @@ RT_DEVICE real3 RayAt(Ray r, real t) { return r.origin + r.direction * t; }
 // intersection test near it, is a few ulps of that magnitude whatever the scene's size
 // and wherever it lies, so no absolute floor is needed near the origin.
 RT_DEVICE real3 OffsetRayOrigin(real3 p, real3 n, real scene_epsilon, real scale) {
-  const real kRelative = 8.0f / 8388608.0f;
+  const real kRelative = 8.0f * RT_REAL_ULP;
   real m = fmax(MaxComponent(Abs3(p)), scale);
   return p + n * (scene_epsilon + kRelative * m);
 }

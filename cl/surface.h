@@ -46,14 +46,14 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
   } else {
     RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
     real b0 = 1.0f - hit.b1 - hit.b2;
-    p_obj = tri->v0 * b0 + tri->v1 * hit.b1 + tri->v2 * hit.b2;
-    mag = fmax(MaxComponent(Abs3(tri->v0)),
-               fmax(MaxComponent(Abs3(tri->v1)), MaxComponent(Abs3(tri->v2))));
-    ng_obj = Cross(tri->v1 - tri->v0, tri->v2 - tri->v0);
+    real3 v0 = ToReal3(tri->v0), v1 = ToReal3(tri->v1), v2 = ToReal3(tri->v2);
+    p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
+    mag = fmax(MaxComponent(Abs3(v0)), fmax(MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))));
+    ng_obj = Cross(v1 - v0, v2 - v0);
     n_obj = ng_obj;
     if (RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0) {
       RT_GLOBAL const TriangleNormals* tn = &sd->normals[hit.primitive];
-      n_obj = tn->n0 * b0 + tn->n1 * hit.b1 + tn->n2 * hit.b2;
+      n_obj = ToReal3(tn->n0) * b0 + ToReal3(tn->n1) * hit.b1 + ToReal3(tn->n2) * hit.b2;
     }
   }
   sp.scale = mag;
@@ -62,8 +62,8 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     RT_GLOBAL const float4* o2w = inst->object_to_world;
     real lin = 0.0f, shift = 0.0f;
     for (int r = 0; r < 3; ++r) {
-      lin = fmax(lin, fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z));
-      shift = fmax(shift, fabs(o2w[r].w));
+      lin = fmax(lin, (real)(fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z)));
+      shift = fmax(shift, (real)fabs(o2w[r].w));
     }
     sp.scale = lin * mag + shift;
     sp.p = TransformPoint(inst->object_to_world, p_obj);
@@ -75,8 +75,9 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     sp.n = Normalize(n_obj);
   }
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0) {
-    sp.p = sp.p + inst->motion * ray.time;
-    sp.scale = sp.scale + MaxComponent(Abs3(inst->motion)) * ray.time;
+    real3 motion = ToReal3(inst->motion);
+    sp.p = sp.p + motion * ray.time;
+    sp.scale = sp.scale + MaxComponent(Abs3(motion)) * ray.time;
   }
   sp.wo = Normalize(-ray.direction);
   sp.front = Dot(sp.wo, sp.ng) > 0.0f;

@@ -241,6 +241,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0) |
             (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0);
   f.fast_math = options.fast_math;
+  f.double_precision = options.double_precision;
   f.stats.bvh_build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return f;

@@ -27,6 +27,7 @@ struct RenderOptions {
   bool use_scene_epsilon = true;  // Off: rely on the scale-aware offset alone.
   bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
   bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
+  bool double_precision = false;  // Computation in double (cl/util/real.h); storage stays float.
   StopRule stop;
   BvhOptions bvh;
 };
@@ -43,6 +44,8 @@ struct FlatScene {
   RT_DATA_ARRAYS(RT_FLAT_SCENE_VECTOR)  // The device arrays of cl/data_arrays.h.
   FlatStats stats;
   bool fast_math = false;  // Host-side only: how the OpenCL program is built.
+  // Host-side only: which build of the shared math runs (both devices; cl/util/real.h).
+  bool double_precision = false;
 
   // Pointers into the arrays above, for the CPU reference.
   SceneData view() const;

@@ -5,7 +5,8 @@
 double by build), while the device arrays keep their float layouts. This script does the
 mechanical part: in the code (not the comments) of every header of cl/ that is not a
 storage header, float3 -> real3, float2 -> real2, float -> real, make_float3/2 ->
-make_real3/2. It is idempotent, so it can be re-run on headers that arrive in float
+make_real3/2, a float literal passed straight to fmin/fmax -> RT_R(literal), and exp/pow/sin/cos ->
+ExpR/PowR/SinR/CosR (cl/util/transcendental.h). It is idempotent, so it can be re-run on headers that arrive in float
 (after a merge); what it cannot know (a value read from an array needs ToReal3, a result
 stored into one ToFloat3) the compilers point out: OpenCL C and the CPU reference's double
 build have no implicit conversion between float3 and double3.
@@ -21,7 +22,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 STORAGE = {
     "cl/compat.h", "cl/data_arrays.h", "cl/features.h", "cl/film_types.h",
     "cl/scene_types.h", "cl/simd.h", "cl/texture/texture_types.h", "cl/util/real.h",
-    "cl/util/hash.h",
+    "cl/util/hash.h", "cl/util/transcendental.h",
 }
 RULES = [
     (re.compile(r"\bmake_float3\b"), "make_real3"),
@@ -29,6 +30,17 @@ RULES = [
     (re.compile(r"\bfloat3\b"), "real3"),
     (re.compile(r"\bfloat2\b"), "real2"),
     (re.compile(r"\bfloat\b"), "real"),
+    # A float literal as a direct argument of fmin/fmax: OpenCL C finds fmax(float, double)
+    # ambiguous, so the literal takes the computation's type (RT_R of cl/util/real.h).
+    (re.compile(r"\b(fmin|fmax)\((-?[0-9]+\.[0-9]*)f\s*,"), r"\1(RT_R(\2),"),
+    (re.compile(r"\b(fmin|fmax)(\([^(),]*(?:\([^()]*\)[^(),]*)*),\s*(-?[0-9]+\.[0-9]*)f\)"),
+     r"\1\2, RT_R(\3))"),
+    # Library exp/pow/sin/cos round differently on PoCL and glibc in double; the versions of
+    # cl/util/transcendental.h are the library's in float and exactly reproducible in double.
+    (re.compile(r"\bexp\("), "ExpR("),
+    (re.compile(r"\bpow\("), "PowR("),
+    (re.compile(r"\bsin\("), "SinR("),
+    (re.compile(r"\bcos\("), "CosR("),
 ]
 
 

@@ -32,8 +32,8 @@ RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
                                 RT_PRIVATE const Material* m, RaySampler rs,
                                 RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
-  if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return m->diffuse;
-  real3 l = m->ambient * h->ambient_light;
+  if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return ToReal3(m->diffuse);
+  real3 l = ToReal3(m->ambient * h->ambient_light);
   LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
   for (int i = 0; i < h->num_lights; ++i)
     l += ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);

@@ -13,10 +13,10 @@
 #include "ray_tree.h"
 
 RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, real3 normal) {
-  info->t = hit.t;
+  info->t = hit.t;  // Rounds to the float of the output in double.
   info->instance = hit.instance;
   info->primitive = hit.primitive;
-  info->normal = normal;
+  info->normal = ToFloat3(normal);
 }
 
 // Radiance along a camera ray through the film at pixel_uv (where a background texture is
@@ -82,7 +82,7 @@ RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint 
   *weight = 1.0f;
   if (h->filter == RT_FILTER_GAUSSIAN) {
     real dx = film.x - 0.5f, dy = film.y - 0.5f;
-    *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
+    *weight = ExpR(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
   Ray ray = GenerateCameraRay(sd, (real)x + film.x, (real)y + film.y, lens, time);
   // The background image is stretched over the film, pixel (x, y) at (x, y) / resolution:

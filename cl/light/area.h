@@ -8,10 +8,10 @@
 
 RT_DEVICE LightSample SampleAreaLight(RT_GLOBAL const Light* light,
                                       RT_PRIVATE const LightSampleContext* ctx, real2 u) {
-  real3 q = light->position + light->edge1 * u.x + light->edge2 * u.y;
-  LightSample ls = LightSampleTowards(ctx->p, q, light->emission * light->area);
+  real3 q = ToReal3(light->position) + ToReal3(light->edge1) * u.x + ToReal3(light->edge2) * u.y;
+  LightSample ls = LightSampleTowards(ctx->p, q, ToReal3(light->emission) * light->area);
   // Both faces emit, as the course's reference images show (cornellbox_area's ceiling).
-  ls.irradiance = ls.irradiance * fabs(Dot(light->normal, ls.wi));
+  ls.irradiance = ls.irradiance * fabs(Dot(ToReal3(light->normal), ls.wi));
   return ls;
 }
 

@@ -13,9 +13,9 @@ RT_DEVICE real3 BlinnPhong(RT_PRIVATE const Material* m, real3 n, real3 wo, real
   real cos_i = Dot(n, wi);
   if (cos_i <= 0.0f) return Vec3(0.0f);
   real3 h = Normalize(wi + wo);
-  real cos_h = fmax(0.0f, Dot(n, h));
+  real cos_h = fmax(RT_R(0.0), Dot(n, h));
   real spec = cos_h > 0.0f ? PowF(cos_h, m->phong_exponent) : 0.0f;
-  return (m->diffuse * cos_i + m->specular * spec) * e;
+  return (ToReal3(m->diffuse) * cos_i + ToReal3(m->specular) * spec) * e;
 }
 
 #endif  // RT_MATERIAL_BLINN_PHONG_H

@@ -56,10 +56,10 @@ RT_DEVICE real3 BrdfFCos(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real
   int normalized = (b->flags & RT_BRDF_NORMALIZED) != 0;
   if (b->model == RT_BRDF_TORRANCE_SPARROW) {
     real3 h = Normalize(wi + wo);
-    real cos_h = fmax(0.0f, Dot(n, h));
+    real cos_h = fmax(RT_R(0.0), Dot(n, h));
     real o_h = Dot(wo, h);
     real d = (p + 2.0f) * (1.0f / (2.0f * RT_PI)) * PowF(cos_h, p);
-    real g = fmin(1.0f, fmin(2.0f * cos_h * cos_o / o_h, 2.0f * cos_h * cos_i / o_h));
+    real g = fmin(RT_R(1.0), fmin(2.0f * cos_h * cos_o / o_h, 2.0f * cos_h * cos_i / o_h));
     real f = FrConductor(cos_i, b->eta, b->kappa);
     real kd_scale = (b->flags & RT_BRDF_KD_FRESNEL) != 0 ? (1.0f - f) : 1.0f;
     real spec = d * f * g / (4.0f * cos_o);  // The cos(t_i) of the denominator cancels.
@@ -67,10 +67,10 @@ RT_DEVICE real3 BrdfFCos(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real
   }
   real cos_a;
   if (BrdfIsPhongLobe(b->model)) {
-    cos_a = fmax(0.0f, Dot(Reflect(wi, n), wo));
+    cos_a = fmax(RT_R(0.0), Dot(Reflect(wi, n), wo));
   } else {
     real3 h = Normalize(wi + wo);
-    cos_a = fmax(0.0f, Dot(n, h));
+    cos_a = fmax(RT_R(0.0), Dot(n, h));
   }
   real spec = cos_a > 0.0f ? PowF(cos_a, p) : 0.0f;
   if (b->model == RT_BRDF_ORIGINAL_BLINN_PHONG || b->model == RT_BRDF_ORIGINAL_PHONG)
@@ -103,12 +103,12 @@ RT_DEVICE real CosineLobePdf(real cos_a, real e) {
 
 // A direction of the cos^e lobe around unit axis `a` from u in [0, 1)^2.
 RT_DEVICE real3 SampleCosineLobe(real3 a, real e, real2 u) {
-  real cos_t = pow(1.0f - u.x, 1.0f / (e + 1.0f));  // 1 - u keeps cos_t > 0.
-  real sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
+  real cos_t = PowR(1.0f - u.x, 1.0f / (e + 1.0f));  // 1 - u keeps cos_t > 0.
+  real sin_t = sqrt(fmax(RT_R(0.0), 1.0f - cos_t * cos_t));
   real phi = 2.0f * RT_PI * u.y;
   real3 s, t;
   CoordinateSystem(a, &s, &t);
-  return s * (sin_t * cos(phi)) + t * (sin_t * sin(phi)) + a * cos_t;
+  return s * (sin_t * CosR(phi)) + t * (sin_t * SinR(phi)) + a * cos_t;
 }
 
 // Solid-angle density of BrdfSample choosing wi.

@@ -19,7 +19,7 @@ RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
   real eta_i = front ? 1.0f : m->refraction_index;
   real eta_t = front ? m->refraction_index : 1.0f;
   real cos_t;
-  real fr = FrDielectric(fmax(cos_o, 0.0f), eta_i, eta_t, &cos_t);
+  real fr = FrDielectric(fmax(cos_o, RT_R(0.0)), eta_i, eta_t, &cos_t);
   int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0;
   real pick = choose ? RaySample1D(rs, 4u) : 0.0f;
   int do_reflect = !choose || pick < fr;
@@ -36,7 +36,7 @@ RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
     frost.key = HashCombine(rs.key, 3u);
     real3 t = GlossyDirection(sd, m, Refract(-s->wo, s->n, eta_i / eta_t, cos_o, cos_t), frost);
     PushRay(stack, ChildTask(task, SpawnRay(sd, s, t, 1), choose ? w : w * (1.0f - fr),
-                             front ? m->absorption : Vec3(0.0f), RT_CHILD_REFRACTED, front));
+                             front ? ToReal3(m->absorption) : Vec3(0.0f), RT_CHILD_REFRACTED, front));
   }
 }
 

@@ -23,8 +23,8 @@ RT_DEVICE Material EvaluateMaterial(RT_PRIVATE const SceneData* sd, RT_PRIVATE S
 // The hw6 reflection model of a material (BRDF="id"): its kd, ks, exponent and complex index.
 RT_DEVICE BrdfParams MaterialBrdf(RT_PRIVATE const Material* m) {
   BrdfParams b;
-  b.kd = m->diffuse;
-  b.ks = m->specular;
+  b.kd = ToReal3(m->diffuse);
+  b.ks = ToReal3(m->specular);
   b.exponent = m->phong_exponent;
   b.model = m->brdf;
   b.flags = m->brdf_flags;

@@ -13,7 +13,7 @@ RT_DEVICE real3 CheckerboardTexture(RT_GLOBAL const TextureDesc* t, real3 p) {
   int x = CheckerParity(p.x, t->checker_offset, t->checker_scale);
   int y = CheckerParity(p.y, t->checker_offset, t->checker_scale);
   int z = CheckerParity(p.z, t->checker_offset, t->checker_scale);
-  return (x != y) != z ? t->black : t->white;
+  return ToReal3((x != y) != z ? t->black : t->white);
 }
 
 #endif  // RT_CHECKERBOARD_H

@@ -23,7 +23,7 @@ RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd,
   TextureFrame f;
   if (hit.primitive < 0) {
     if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0)
-      p = p - inst->motion * s->time;
+      p = p - ToReal3(inst->motion) * s->time;
     f.p_obj = Normalize(transformed ? TransformPoint(inst->world_to_object, p) : p);
     f.uv = SphereUV(f.p_obj);
     SphereTangents(f.p_obj, &f.dpdu, &f.dpdv);
@@ -31,10 +31,11 @@ RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd,
     RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
     RT_GLOBAL const TriangleUV* tuv = &sd->triangle_uvs[hit.primitive];
     real b0 = 1.0f - hit.b1 - hit.b2;
-    f.p_obj = tri->v0 * b0 + tri->v1 * hit.b1 + tri->v2 * hit.b2;
+    real3 v0 = ToReal3(tri->v0), v1 = ToReal3(tri->v1), v2 = ToReal3(tri->v2);
+    f.p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
     f.uv = make_real2(tuv->uv0.x * b0 + tuv->uv1.x * hit.b1 + tuv->uv2.x * hit.b2,
                        tuv->uv0.y * b0 + tuv->uv1.y * hit.b1 + tuv->uv2.y * hit.b2);
-    TriangleTangents(tri->v0, tri->v1, tri->v2, tuv->uv0, tuv->uv1, tuv->uv2, &f.dpdu, &f.dpdv);
+    TriangleTangents(v0, v1, v2, ToReal2(tuv->uv0), ToReal2(tuv->uv1), ToReal2(tuv->uv2), &f.dpdu, &f.dpdv);
   }
   f.dpdu_obj = f.dpdu;
   f.dpdv_obj = f.dpdv;
@@ -113,11 +114,11 @@ RT_DEVICE void ApplyTextures(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfaceP
       s->n = BumpNormal(sd, t, s->hit, f, q, s->n);
     } else if (t->decal != RT_DECAL_REPLACE_BACKGROUND) {
       real3 c = TextureColor(sd, t, f.uv, q);
-      if (t->decal == RT_DECAL_REPLACE_KD) m->diffuse = c;
-      if (t->decal == RT_DECAL_BLEND_KD) m->diffuse = (m->diffuse + c) * 0.5f;
-      if (t->decal == RT_DECAL_REPLACE_KS) m->specular = c;
+      if (t->decal == RT_DECAL_REPLACE_KD) m->diffuse = ToFloat3(c);
+      if (t->decal == RT_DECAL_BLEND_KD) m->diffuse = ToFloat3((ToReal3(m->diffuse) + c) * 0.5f);
+      if (t->decal == RT_DECAL_REPLACE_KS) m->specular = ToFloat3(c);
       if (t->decal == RT_DECAL_REPLACE_ALL) {
-        m->diffuse = c;
+        m->diffuse = ToFloat3(c);
         m->unlit = 1;
         m->type = RT_MATERIAL_PLAIN;  // Nothing reflects or refracts from it either.
       }
@@ -129,7 +130,7 @@ RT_DEVICE void ApplyTextures(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfaceP
 // set (its texel values are radiance, whatever the Normalizer), else the colour.
 RT_DEVICE real3 Background(RT_PRIVATE const SceneData* sd, real2 pixel_uv) {
   RT_GLOBAL const SceneHeader* h = sd->header;
-  if (!RT_HAS(sd, RT_FEATURE_TEXTURES) || h->background_texture < 0) return h->background;
+  if (!RT_HAS(sd, RT_FEATURE_TEXTURES) || h->background_texture < 0) return ToReal3(h->background);
   RT_GLOBAL const TextureDesc* t = &sd->textures[h->background_texture];
   return LookupImage(sd->texels, t, pixel_uv);
 }

@@ -5,8 +5,9 @@
 #define RT_UTIL_MATH_H
 
 #include "real.h"
+#include "transcendental.h"
 
-#define RT_PI 3.14159265358979323846f
+#define RT_PI RT_R(3.14159265358979323846)
 #define RT_INFINITY 3.402823466e+38f
 
 // Plain comparisons rather than fmin/fmax: they compile to single min/max instructions on
@@ -33,7 +34,7 @@ RT_DEVICE real Component(real3 a, int axis) { return axis == 0 ? a.x : (axis == 
 
 RT_DEVICE real3 Abs3(real3 a) { return make_real3(fabs(a.x), fabs(a.y), fabs(a.z)); }
 
-RT_DEVICE real3 Exp3(real3 a) { return make_real3(exp(a.x), exp(a.y), exp(a.z)); }
+RT_DEVICE real3 Exp3(real3 a) { return make_real3(ExpR(a.x), ExpR(a.y), ExpR(a.z)); }
 
 RT_DEVICE int MaxDimension(real3 a) {
   return (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
@@ -57,7 +58,7 @@ RT_DEVICE real PowF(real x, real e) {
     }
     return result;
   }
-  return pow(x, e);
+  return PowR(x, e);
 }
 
 // A right-handed orthonormal basis around a unit vector n (Duff et al. 2017), used for

@@ -24,6 +24,7 @@ typedef double3 real3;
 #define make_real3(x, y, z) ((double3)((x), (y), (z)))
 #define make_real2(x, y) ((double2)((x), (y)))
 #define ToReal3(v) convert_double3(v)
+#define ToReal2(v) convert_double2(v)
 #define ToFloat3(v) convert_float3(v)
 #else
 typedef double real;
@@ -32,6 +33,7 @@ typedef double3 real3;
 inline real3 make_real3(real x, real y, real z) { return make_double3(x, y, z); }
 inline real2 make_real2(real x, real y) { return make_double2(x, y); }
 inline real3 ToReal3(float3 v) { return make_double3(v.x, v.y, v.z); }
+inline real2 ToReal2(float2 v) { return make_double2(v.x, v.y); }
 inline float3 ToFloat3(real3 v) {
   return make_float3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
 }
@@ -49,6 +51,7 @@ typedef float3 real3;
 #define make_real3 make_float3
 #define make_real2 make_float2
 #define ToReal3(v) (v)
+#define ToReal2(v) (v)
 #define ToFloat3(v) (v)
 #define RT_R(x) x##f
 #define RT_REAL_ULP (1.0f / 8388608.0f)

@@ -35,7 +35,7 @@ RT_DEVICE real Atan2F(real y, real x) {
 
 // acos(c) for c in [-1, 1] (clamped), as the angle of (c, sqrt(1 - c^2)).
 RT_DEVICE real AcosF(real c) {
-  c = fmin(1.0f, fmax(-1.0f, c));
+  c = fmin(RT_R(1.0), fmax(RT_R(-1.0), c));
   return Atan2F(sqrt((1.0f - c) * (1.0f + c)), c);
 }
 
