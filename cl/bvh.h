@@ -65,7 +65,8 @@ RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE 
   LaneReal tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
   tf = tf * 1.0000004f;
   *tnear = tn;
-  return LaneMaskToInt(tn <= tf);  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
+  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
+  return LaneMaskToInt(tn <= tf);
 }
 
 // Tests a node's children and returns the nearest child hit (RT_BVH_POP if none), pushing
@@ -157,7 +158,8 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       for (int i = first; i < end; ++i) {
         RT_GLOBAL const Triangle* tri = &sd->triangles[i];
         real t, b1, b2;
-        if (IntersectTriangle(&tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull, &t, &b1, &b2)) {
+        if (IntersectTriangle(&tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull,
+                              &t, &b1, &b2)) {
           tmax = t;
           hit->t = t;
           hit->instance = instance;

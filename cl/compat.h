@@ -60,16 +60,16 @@ inline double3 make_double3(double x, double y, double z) { return double3{x, y,
 inline double2 make_double2(double x, double y) { return double2{x, y}; }
 
 // The component-wise operators OpenCL C has built in, for one 3-vector type V of scalar S.
-#define RT_VEC3_OPERATORS(V, S, MAKE)                                                          \
-  inline V operator+(V a, V b) { return MAKE(a.x + b.x, a.y + b.y, a.z + b.z); }               \
-  inline V operator-(V a, V b) { return MAKE(a.x - b.x, a.y - b.y, a.z - b.z); }               \
-  inline V operator*(V a, V b) { return MAKE(a.x * b.x, a.y * b.y, a.z * b.z); }               \
-  inline V operator/(V a, V b) { return MAKE(a.x / b.x, a.y / b.y, a.z / b.z); }               \
-  inline V operator*(V a, S s) { return MAKE(a.x * s, a.y * s, a.z * s); }                     \
-  inline V operator*(S s, V a) { return MAKE(a.x * s, a.y * s, a.z * s); }                     \
-  inline V operator/(V a, S s) { return MAKE(a.x / s, a.y / s, a.z / s); }                     \
-  inline V operator-(V a) { return MAKE(-a.x, -a.y, -a.z); }                                   \
-  inline V& operator+=(V& a, V b) { return a = a + b; }                                        \
+#define RT_VEC3_OPERATORS(V, S, MAKE)                                            \
+  inline V operator+(V a, V b) { return MAKE(a.x + b.x, a.y + b.y, a.z + b.z); } \
+  inline V operator-(V a, V b) { return MAKE(a.x - b.x, a.y - b.y, a.z - b.z); } \
+  inline V operator*(V a, V b) { return MAKE(a.x * b.x, a.y * b.y, a.z * b.z); } \
+  inline V operator/(V a, V b) { return MAKE(a.x / b.x, a.y / b.y, a.z / b.z); } \
+  inline V operator*(V a, S s) { return MAKE(a.x * s, a.y * s, a.z * s); }       \
+  inline V operator*(S s, V a) { return MAKE(a.x * s, a.y * s, a.z * s); }       \
+  inline V operator/(V a, S s) { return MAKE(a.x / s, a.y / s, a.z / s); }       \
+  inline V operator-(V a) { return MAKE(-a.x, -a.y, -a.z); }                     \
+  inline V& operator+=(V& a, V b) { return a = a + b; }                          \
   inline V& operator*=(V& a, V b) { return a = a * b; }
 RT_VEC3_OPERATORS(float3, float, make_float3)
 RT_VEC3_OPERATORS(double3, double, make_double3)

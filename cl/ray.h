@@ -15,7 +15,7 @@ typedef struct Hit {
   real t;
   int instance;   // -1 when nothing was hit.
   int primitive;  // Triangle index, or -1 for a sphere.
-  real b1, b2;   // Barycentric coordinates of v1 and v2 on a triangle.
+  real b1, b2;    // Barycentric coordinates of v1 and v2 on a triangle.
 } Hit;
 
 RT_DEVICE Ray MakeRay(real3 origin, real3 direction, real tmax, real time) {
@@ -30,11 +30,11 @@ RT_DEVICE Ray MakeRay(real3 origin, real3 direction, real tmax, real time) {
 RT_DEVICE real3 RayAt(Ray r, real t) { return r.origin + r.direction * t; }
 
 // The origin of a ray leaving surface point p on the side that unit normal n points to:
-// first the scene's own epsilon along n (as the course's files ask), then 8 float ulps of
-// `scale`, the largest coordinate magnitude p was computed from (its triangle's vertices
-// or its sphere, in world space; at least |p|). The rounding error of p, and of the next
-// intersection test near it, is a few ulps of that magnitude whatever the scene's size
-// and wherever it lies, so no absolute floor is needed near the origin.
+// first the scene's own epsilon along n (as the course's files ask), then 8 ulps (of the
+// computation's type, cl/util/real.h) of `scale`, the largest coordinate magnitude p was computed
+// from (its triangle's vertices or its sphere, in world space; at least |p|). The rounding error of
+// p, and of the next intersection test near it, is a few ulps of that magnitude whatever the
+// scene's size and wherever it lies, so no absolute floor is needed near the origin.
 RT_DEVICE real3 OffsetRayOrigin(real3 p, real3 n, real scene_epsilon, real scale) {
   const real kRelative = 8.0f * RT_REAL_ULP;
   real m = fmax(MaxComponent(Abs3(p)), scale);

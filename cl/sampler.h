@@ -52,7 +52,7 @@ RT_DEVICE real2 Stratified2D(SampleKey k, uint dimension) {
   uint stratum = PermutationElement(k.sample, k.samples, key);
   real inv = 1.0f / (real)k.strata;
   return make_real2(((real)(stratum % k.strata) + xi.x) * inv,
-                     ((real)(stratum / k.strata) + xi.y) * inv);
+                    ((real)(stratum / k.strata) + xi.y) * inv);
 }
 
 // A jittered 1D pattern of `samples` strata (for the shutter time).

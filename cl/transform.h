@@ -18,8 +18,8 @@ RT_DEVICE real3 TransformVector(RT_GLOBAL const float4* m, real3 v) {
 // object), so this multiplies by its transpose.
 RT_DEVICE real3 TransformNormalByInverse(RT_GLOBAL const float4* m, real3 n) {
   return make_real3(m[0].x * n.x + m[1].x * n.y + m[2].x * n.z,
-                     m[0].y * n.x + m[1].y * n.y + m[2].y * n.z,
-                     m[0].z * n.x + m[1].z * n.y + m[2].z * n.z);
+                    m[0].y * n.x + m[1].y * n.y + m[2].y * n.z,
+                    m[0].z * n.x + m[1].z * n.y + m[2].z * n.z);
 }
 
 #endif  // RT_TRANSFORM_H

@@ -15,6 +15,8 @@ Usage: tools/to_real.py [FILE...]   (default: every header under cl/)
 """
 import pathlib
 import re
+import shutil
+import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -80,6 +82,9 @@ def main(argv):
         new = convert(text)
         if new != text:
             path.write_text(new)
+            # Shorter names can let clang-format join lines; keep the files formatted.
+            if shutil.which("clang-format"):
+                subprocess.run(["clang-format", "-i", str(path)], check=False)
             print("converted", rel)
 
 

@@ -18,8 +18,8 @@ RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, real3 origin, real3 seg
 // The light sample's contribution towards s->wo: none from below the shading normal or
 // when the shadow segment is blocked.
 RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
-                                  RT_PRIVATE const Material* m, LightSample ls,
-                                  RT_PRIVATE uint* rays) {
+                                 RT_PRIVATE const Material* m, LightSample ls,
+                                 RT_PRIVATE uint* rays) {
   if (!ls.valid || Dot(s->n, ls.wi) <= 0.0f) return Vec3(0.0f);
   real3 origin = OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale);
   if (!Unoccluded(sd, origin, ls.p_light - origin, s->time, rays)) return Vec3(0.0f);
@@ -29,8 +29,7 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
 // Summed in the lights' array order (point lights, then area lights), which fixes the
 // last bit of the result. `rs` draws the area lights' samples.
 RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
-                                RT_PRIVATE const Material* m, RaySampler rs,
-                                RT_PRIVATE uint* rays) {
+                               RT_PRIVATE const Material* m, RaySampler rs, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return ToReal3(m->diffuse);
   real3 l = ToReal3(m->ambient * h->ambient_light);

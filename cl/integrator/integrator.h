@@ -24,7 +24,7 @@ RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, real3 nor
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
 // evaluate the material, add direct light, scatter.
 RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, real2 pixel_uv,
-                    RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
+                   RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
   RayStack stack;
@@ -67,8 +67,8 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
 // Camera sample `sample` of pixel (x, y): its radiance, and its reconstruction-filter
 // weight in *weight.
 RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint sample,
-                              RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
-                              RT_PRIVATE uint* rays) {
+                             RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
+                             RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   RT_GLOBAL const Camera* cam = &h->camera;
   SampleKey sk = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples,

@@ -27,7 +27,7 @@ typedef struct RayTask {
   Ray ray;
   real3 weight;
   real3 medium;  // Absorption coefficient of the medium the ray travels in (0: air).
-  uint key;       // Identifies the ray in the tree; keys its random dimensions.
+  uint key;      // Identifies the ray in the tree; keys its random dimensions.
   int depth;
   int inside;  // 1 while the ray travels inside a dielectric.
 } RayTask;

@@ -22,9 +22,9 @@ RT_DEVICE real SpotFalloff(RT_GLOBAL const Light* light, real cos_a) {
 
 RT_DEVICE LightSample SampleSpotLight(RT_GLOBAL const Light* light,
                                       RT_PRIVATE const LightSampleContext* ctx) {
-  LightSample ls =
-      LightSampleTowards(ctx->p, ToReal3(light->position), ToReal3(light->emission));
-  if (ls.valid) ls.irradiance = ls.irradiance * SpotFalloff(light, -Dot(ls.wi, ToReal3(light->normal)));
+  LightSample ls = LightSampleTowards(ctx->p, ToReal3(light->position), ToReal3(light->emission));
+  if (ls.valid)
+    ls.irradiance = ls.irradiance * SpotFalloff(light, -Dot(ls.wi, ToReal3(light->normal)));
   return ls;
 }
 

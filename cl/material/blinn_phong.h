@@ -8,8 +8,7 @@
 // Diffuse plus Blinn-Phong specular for irradiance `e` arriving from unit direction wi
 // at a point with unit normal n, seen from unit direction wo. `m` is the material as
 // evaluated at the point (EvaluateMaterial).
-RT_DEVICE real3 BlinnPhong(RT_PRIVATE const Material* m, real3 n, real3 wo, real3 wi,
-                            real3 e) {
+RT_DEVICE real3 BlinnPhong(RT_PRIVATE const Material* m, real3 n, real3 wo, real3 wi, real3 e) {
   real cos_i = Dot(n, wi);
   if (cos_i <= 0.0f) return Vec3(0.0f);
   real3 h = Normalize(wi + wo);

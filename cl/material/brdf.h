@@ -77,7 +77,7 @@ RT_DEVICE real3 BrdfFCos(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real
     return b->kd * cos_i + b->ks * spec;
   if (normalized) {
     real norm = BrdfIsPhongLobe(b->model) ? (p + 2.0f) * (1.0f / (2.0f * RT_PI))
-                                           : (p + 8.0f) * (1.0f / (8.0f * RT_PI));
+                                          : (p + 8.0f) * (1.0f / (8.0f * RT_PI));
     return (b->kd * (1.0f / RT_PI) + b->ks * (norm * spec)) * cos_i;
   }
   return (b->kd + b->ks * spec) * cos_i;
@@ -133,7 +133,7 @@ RT_DEVICE real BrdfPdf(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real3 
 // (a direction below the surface returns zero but keeps its density; a lost draw returns
 // density 0, and the caller ends the path).
 RT_DEVICE real3 BrdfSample(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real2 u,
-                            RT_PRIVATE real3* wi, RT_PRIVATE real* pdf) {
+                           RT_PRIVATE real3* wi, RT_PRIVATE real* pdf) {
   real w = BrdfSpecularWeight(b);
   if (u.x < w) {
     real2 v = make_real2(u.x / w, u.y);  // Reuse the choice's number, rescaled.

@@ -11,10 +11,11 @@
 RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
                                 RaySampler rs, RT_PRIVATE RayStack* stack) {
-  real fr = FrConductor(fmax(Dot(s->n, s->wo), RT_R(0.0)), m->refraction_index, m->absorption_index);
+  real fr =
+      FrConductor(fmax(Dot(s->n, s->wo), RT_R(0.0)), m->refraction_index, m->absorption_index);
   real3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
-  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * ToReal3(m->mirror) * fr, task->medium,
-                           RT_CHILD_REFLECTED, 0));
+  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * ToReal3(m->mirror) * fr,
+                           task->medium, RT_CHILD_REFLECTED, 0));
 }
 
 #endif  // RT_MATERIAL_CONDUCTOR_H

@@ -35,8 +35,9 @@ RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
     RaySampler frost = rs;
     frost.key = HashCombine(rs.key, 3u);
     real3 t = GlossyDirection(sd, m, Refract(-s->wo, s->n, eta_i / eta_t, cos_o, cos_t), frost);
-    PushRay(stack, ChildTask(task, SpawnRay(sd, s, t, 1), choose ? w : w * (1.0f - fr),
-                             front ? ToReal3(m->absorption) : Vec3(0.0f), RT_CHILD_REFRACTED, front));
+    PushRay(stack,
+            ChildTask(task, SpawnRay(sd, s, t, 1), choose ? w : w * (1.0f - fr),
+                      front ? ToReal3(m->absorption) : Vec3(0.0f), RT_CHILD_REFRACTED, front));
   }
 }
 

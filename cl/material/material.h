@@ -5,12 +5,12 @@
 #ifndef RT_MATERIAL_H
 #define RT_MATERIAL_H
 
+#include "../texture/texturing.h"
 #include "blinn_phong.h"
 #include "brdf.h"
 #include "conductor.h"
 #include "dielectric.h"
 #include "mirror.h"
-#include "../texture/texturing.h"
 
 // The parameters shading reads at this point, as a private copy: textures replace values
 // here (diffuse and specular from texels) and perturb s->n, and nothing downstream changes.
@@ -35,8 +35,8 @@ RT_DEVICE BrdfParams MaterialBrdf(RT_PRIVATE const Material* m) {
 
 // Light of irradiance e arriving from wi, reflected towards wo: the course's Blinn-Phong, or
 // the material's BRDF of assignment 6 (whose original Blinn-Phong is the same shading).
-RT_DEVICE real3 EvaluateBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                              real3 n, real3 wo, real3 wi, real3 e) {
+RT_DEVICE real3 EvaluateBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m, real3 n,
+                             real3 wo, real3 wi, real3 e) {
   if (RT_HAS(sd, RT_FEATURE_BRDF) && m->brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) {
     BrdfParams b = MaterialBrdf(m);
     return BrdfFCos(&b, n, wo, wi) * e;

@@ -10,8 +10,8 @@ RT_DEVICE void ScatterMirror(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ma
                              RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
                              RaySampler rs, RT_PRIVATE RayStack* stack) {
   real3 r = GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
-  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * ToReal3(m->mirror), task->medium,
-                           RT_CHILD_REFLECTED, 0));
+  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * ToReal3(m->mirror),
+                           task->medium, RT_CHILD_REFLECTED, 0));
 }
 
 #endif  // RT_MATERIAL_MIRROR_H

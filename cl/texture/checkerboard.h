@@ -3,6 +3,7 @@
 #ifndef RT_CHECKERBOARD_H
 #define RT_CHECKERBOARD_H
 
+#include "../util/math.h"
 #include "texture_types.h"
 
 RT_DEVICE int CheckerParity(real x, real offset, real scale) {

@@ -34,8 +34,9 @@ RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd,
     real3 v0 = ToReal3(tri->v0), v1 = ToReal3(tri->v1), v2 = ToReal3(tri->v2);
     f.p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
     f.uv = make_real2(tuv->uv0.x * b0 + tuv->uv1.x * hit.b1 + tuv->uv2.x * hit.b2,
-                       tuv->uv0.y * b0 + tuv->uv1.y * hit.b1 + tuv->uv2.y * hit.b2);
-    TriangleTangents(v0, v1, v2, ToReal2(tuv->uv0), ToReal2(tuv->uv1), ToReal2(tuv->uv2), &f.dpdu, &f.dpdv);
+                      tuv->uv0.y * b0 + tuv->uv1.y * hit.b1 + tuv->uv2.y * hit.b2);
+    TriangleTangents(v0, v1, v2, ToReal2(tuv->uv0), ToReal2(tuv->uv1), ToReal2(tuv->uv2), &f.dpdu,
+                     &f.dpdv);
   }
   f.dpdu_obj = f.dpdu;
   f.dpdv_obj = f.dpdv;
@@ -49,7 +50,7 @@ RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd,
 // A colour texture's value: images on the 0..1 scale through Normalizer, Perlin noise as
 // a grey level, the checkerboard's colours. Procedural textures are evaluated at p.
 RT_DEVICE real3 TextureColor(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
-                              real2 uv, real3 p) {
+                             real2 uv, real3 p) {
   if (t->type == RT_TEXTURE_IMAGE) return LookupImage(sd->texels, t, uv) * (1.0f / t->normalizer);
   if (t->type == RT_TEXTURE_PERLIN) return Vec3(PerlinTexture(t, p));
   return CheckerboardTexture(t, p);
@@ -59,7 +60,7 @@ RT_DEVICE real3 TextureColor(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Tex
 // texel whatever the texture's Interpolation (bilinear heights give wood_box_all MAE 4.0
 // against the course's image, nearest 0.20).
 RT_DEVICE real ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
-                            real2 uv) {
+                           real2 uv) {
   real3 c = LookupNearest(sd->texels, t, uv);
   return (c.x + c.y + c.z) * (1.0f / 3.0f);
 }
@@ -71,13 +72,13 @@ RT_DEVICE real ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Textu
 // as normals are (the course's bump_mapping_transformed shows both). Perlin noise is
 // differentiated in space (a forward difference of 1e-3 / NoiseScale).
 RT_DEVICE real3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t, Hit hit,
-                            TextureFrame f, real3 p, real3 n) {
+                           TextureFrame f, real3 p, real3 n) {
   if (t->type == RT_TEXTURE_IMAGE) {
     real h = ImageHeight(sd, t, f.uv);
     real dhdu = (ImageHeight(sd, t, make_real2(f.uv.x + 1.0f / (real)t->width, f.uv.y)) - h) *
-                 t->bump_factor;
+                t->bump_factor;
     real dhdv = (ImageHeight(sd, t, make_real2(f.uv.x, f.uv.y + 1.0f / (real)t->height)) - h) *
-                 t->bump_factor;
+                t->bump_factor;
     RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
     int transformed =
         RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
@@ -90,8 +91,8 @@ RT_DEVICE real3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Textu
   real eps = 1e-3f / t->noise_scale;
   real h = PerlinTexture(t, p);
   real3 g = make_real3(PerlinTexture(t, p + make_real3(eps, 0.0f, 0.0f)) - h,
-                         PerlinTexture(t, p + make_real3(0.0f, eps, 0.0f)) - h,
-                         PerlinTexture(t, p + make_real3(0.0f, 0.0f, eps)) - h);
+                       PerlinTexture(t, p + make_real3(0.0f, eps, 0.0f)) - h,
+                       PerlinTexture(t, p + make_real3(0.0f, 0.0f, eps)) - h);
   return GradientBumpedNormal(n, g * (t->bump_factor / eps));
 }
 

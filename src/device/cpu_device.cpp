@@ -49,7 +49,7 @@ uint64_t CpuDevice::render(const RenderWork& work) {
       for (size_t i = first + c, end = first + std::min(count, c + kChunk); i < end; ++i) {
         const uint32_t before = accum_[i].rays;
         accumulate(&view_, static_cast<int>(i % width), static_cast<int>(i / width),
-                        work.sample_begin, work.sample_end, &accum_[i], &primary_[i]);
+                   work.sample_begin, work.sample_end, &accum_[i], &primary_[i]);
         mine += accum_[i].rays - before;
       }
     }

@@ -59,8 +59,7 @@ ClProgramCache::ClProgramCache(const cl::Context& context, const cl::Device& dev
           std::string::npos;
 }
 
-std::string ClProgramCache::options_for(int features, bool fast_math,
-                                        bool double_precision) const {
+std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision) const {
   if (double_precision && !fp64_)
     throw std::runtime_error("OpenCL device " + name_ +
                              " has no double precision (cl_khr_fp64): --precision double needs "
