@@ -30,13 +30,15 @@ RT_DEVICE Ray MakeRay(real3 origin, real3 direction, real tmax, real time) {
 RT_DEVICE real3 RayAt(Ray r, real t) { return r.origin + r.direction * t; }
 
 // The origin of a ray leaving surface point p on the side that unit normal n points to:
-// first the scene's own epsilon along n (as the course's files ask), then 8 ulps (of the
-// computation's type, cl/util/real.h) of `scale`, the largest coordinate magnitude p was computed
-// from (its triangle's vertices or its sphere, in world space; at least |p|). The rounding error of
-// p, and of the next intersection test near it, is a few ulps of that magnitude whatever the
-// scene's size and wherever it lies, so no absolute floor is needed near the origin.
+// first the scene's own epsilon along n (as the course's files ask), then 8 float ulps of
+// `scale`, the largest coordinate magnitude p was computed from (its triangle's vertices
+// or its sphere, in world space; at least |p|). The rounding error of p, and of the next
+// intersection test near it, is a few ulps of that magnitude whatever the scene's size
+// and wherever it lies, so no absolute floor is needed near the origin. Float ulps also in
+// double: the scene is stored in float, and two stored descriptions of one surface (an
+// instance's transform and its inverse) disagree by float ulps whatever the arithmetic.
 RT_DEVICE real3 OffsetRayOrigin(real3 p, real3 n, real scene_epsilon, real scale) {
-  const real kRelative = 8.0f * RT_REAL_ULP;
+  const real kRelative = 8.0f / 8388608.0f;
   real m = fmax(MaxComponent(Abs3(p)), scale);
   return p + n * (scene_epsilon + kRelative * m);
 }

@@ -40,8 +40,6 @@ inline float3 ToFloat3(real3 v) {
 #endif
 // A literal of type real: RT_R(0.5) is 0.5 here and 0.5f in float.
 #define RT_R(x) x
-// The unit roundoff's double, 2^-52: one ulp of a value in [1, 2).
-#define RT_REAL_ULP (1.0 / 4503599627370496.0)
 
 #else  // float
 
@@ -54,7 +52,6 @@ typedef float3 real3;
 #define ToReal2(v) (v)
 #define ToFloat3(v) (v)
 #define RT_R(x) x##f
-#define RT_REAL_ULP (1.0f / 8388608.0f)
 
 #endif
 
