@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
+#include "device/cl/cl_program.h"
 #include "flat_scene.h"
 #include "support/device_harness.h"
 
@@ -62,6 +64,21 @@ size_t differing_pixels(const rt::RenderResult& a, const rt::RenderResult& b) {
 }
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.scene; }
+
+// A device without cl_khr_fp64 refuses double in one line that names it; float is fine.
+TEST(PrecisionSupport, DeviceWithoutFp64RefusesDoubleInOneLine) {
+  EXPECT_NO_THROW(rt::check_precision_support("Tiny GPU", false, false));
+  EXPECT_NO_THROW(rt::check_precision_support("Big GPU", true, true));
+  try {
+    rt::check_precision_support("Tiny GPU", false, true);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("Tiny GPU"), std::string::npos) << m;
+    EXPECT_NE(m.find("--precision double"), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  }
+}
 
 class PrecisionDouble : public ::testing::TestWithParam<Case> {};
 

@@ -59,11 +59,15 @@ ClProgramCache::ClProgramCache(const cl::Context& context, const cl::Device& dev
           std::string::npos;
 }
 
-std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision) const {
-  if (double_precision && !fp64_)
-    throw std::runtime_error("OpenCL device " + name_ +
+void check_precision_support(const std::string& device_name, bool has_fp64, bool double_precision) {
+  if (double_precision && !has_fp64)
+    throw std::runtime_error("OpenCL device " + device_name +
                              " has no double precision (cl_khr_fp64): --precision double needs "
                              "it; use --precision float or --device cpu");
+}
+
+std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision) const {
+  check_precision_support(name_, fp64_, double_precision);
   std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
   if (double_precision) o += " -DRT_REAL_DOUBLE=1";
   if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";

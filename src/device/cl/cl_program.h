@@ -45,6 +45,10 @@ class ClProgramCache {
   std::map<std::string, ClProgram> programs_;
 };
 
+// Throws std::runtime_error (one line naming the device) when `double_precision` is asked
+// of a device without cl_khr_fp64.
+void check_precision_support(const std::string& device_name, bool has_fp64, bool double_precision);
+
 // The kernel source with every shared header inlined (generated at build time).
 extern const char* const kKernelSource;
 
