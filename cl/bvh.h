@@ -23,20 +23,27 @@
 
 // The ray as the node test sees it: origin, reciprocal direction, and for each axis which
 // of a node's bounds (BvhNode.bounds) the ray meets first: the low face when the
-// direction is positive, the high face when negative (Williams et al. 2005).
+// direction is positive, the high face when negative (Williams et al. 2005). Origin and
+// reciprocal direction are kept broadcast to every lane, so the node test is lane
+// operations only (broadcasting per node went through memory in the double build).
 typedef struct NodeRay {
-  real3 o, inv_d;
+  LaneReal ox, oy, oz, ix, iy, iz;
   int near_x, near_y, near_z, far_x, far_y, far_z;
 } NodeRay;
 
 RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
   NodeRay r;
-  r.o = o;
   // A zero component gives +-inf, which the node test handles; -0 keeps its sign.
-  r.inv_d = make_real3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
-  r.near_x = r.inv_d.x < 0.0f ? 3 : 0;
-  r.near_y = r.inv_d.y < 0.0f ? 4 : 1;
-  r.near_z = r.inv_d.z < 0.0f ? 5 : 2;
+  real3 inv_d = make_real3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+  r.ox = LaneSplat(o.x);
+  r.oy = LaneSplat(o.y);
+  r.oz = LaneSplat(o.z);
+  r.ix = LaneSplat(inv_d.x);
+  r.iy = LaneSplat(inv_d.y);
+  r.iz = LaneSplat(inv_d.z);
+  r.near_x = inv_d.x < 0.0f ? 3 : 0;
+  r.near_y = inv_d.y < 0.0f ? 4 : 1;
+  r.near_z = inv_d.z < 0.0f ? 5 : 2;
   r.far_x = 3 - r.near_x;
   r.far_y = 5 - r.near_y;
   r.far_z = 7 - r.near_z;
@@ -49,13 +56,12 @@ RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
 // culls a box the ray actually touches.
 RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r,
                                       real tmax, RT_PRIVATE LaneReal* tnear) {
-  real3 o = r->o, inv_d = r->inv_d;
-  LaneReal nx = (LaneToReal(node->bounds[r->near_x]) - o.x) * inv_d.x;
-  LaneReal ny = (LaneToReal(node->bounds[r->near_y]) - o.y) * inv_d.y;
-  LaneReal nz = (LaneToReal(node->bounds[r->near_z]) - o.z) * inv_d.z;
-  LaneReal fx = (LaneToReal(node->bounds[r->far_x]) - o.x) * inv_d.x;
-  LaneReal fy = (LaneToReal(node->bounds[r->far_y]) - o.y) * inv_d.y;
-  LaneReal fz = (LaneToReal(node->bounds[r->far_z]) - o.z) * inv_d.z;
+  LaneReal nx = (LaneToReal(node->bounds[r->near_x]) - r->ox) * r->ix;
+  LaneReal ny = (LaneToReal(node->bounds[r->near_y]) - r->oy) * r->iy;
+  LaneReal nz = (LaneToReal(node->bounds[r->near_z]) - r->oz) * r->iz;
+  LaneReal fx = (LaneToReal(node->bounds[r->far_x]) - r->ox) * r->ix;
+  LaneReal fy = (LaneToReal(node->bounds[r->far_y]) - r->oy) * r->iy;
+  LaneReal fz = (LaneToReal(node->bounds[r->far_z]) - r->oz) * r->iz;
   // A ray in the plane of a face (zero direction component, origin on the face) gives
   // 0 * inf = NaN there. It stays inside that slab for every t, so the slab must constrain
   // nothing, and it does not: the other face gives -inf as an entry or +inf as an exit,
