@@ -12,6 +12,8 @@
 #define RT_DATA_ARRAYS_H
 
 // RT_DATA_ARRAY(Type, name): one array `name` of `Type`, in kernel-argument order.
+// instance_lights: per instance, the index in `lights` of the object light it is, or -1;
+// light_cdf: the mesh lights' cumulative triangle areas (see Light in scene_types.h).
 #define RT_DATA_ARRAYS(RT_DATA_ARRAY)                \
   RT_DATA_ARRAY(Material, materials)                 \
   RT_DATA_ARRAY(Instance, instances)                 \
@@ -22,7 +24,9 @@
   RT_DATA_ARRAY(TextureDesc, textures)               \
   RT_DATA_ARRAY(uint, texels)                        \
   RT_DATA_ARRAY(InstanceTextures, instance_textures) \
-  RT_DATA_ARRAY(TriangleUV, triangle_uvs)
+  RT_DATA_ARRAY(TriangleUV, triangle_uvs)           \
+  RT_DATA_ARRAY(int, instance_lights)                \
+  RT_DATA_ARRAY(float, light_cdf)
 
 // Structs whose size both sides must agree on besides the arrays' element types: the
 // layout check (rt_sizes in cl/kernel.cl, scene_layout() on the host) covers all of them.

@@ -23,7 +23,9 @@
 #define RT_FEATURE_DIRECTIONAL_LIGHTS (1 << 14)  // DirectionalLight.
 #define RT_FEATURE_SPOT_LIGHTS (1 << 15)         // SpotLight.
 #define RT_FEATURE_BRDF (1 << 16)  // A material with a BRDF other than the original Blinn-Phong.
-#define RT_FEATURE_ALL ((1 << 17) - 1)
+#define RT_FEATURE_MESH_LIGHTS (1 << 17)    // LightMesh: an emitting triangle mesh (hw6).
+#define RT_FEATURE_SPHERE_LIGHTS (1 << 18)  // LightSphere: an emitting sphere or ellipsoid (hw6).
+#define RT_FEATURE_ALL ((1 << 19) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in
@@ -32,6 +34,10 @@
 #define RT_LIGHT_AREA RT_FEATURE_AREA_LIGHTS
 #define RT_LIGHT_DIRECTIONAL RT_FEATURE_DIRECTIONAL_LIGHTS
 #define RT_LIGHT_SPOT RT_FEATURE_SPOT_LIGHTS
+#define RT_LIGHT_MESH RT_FEATURE_MESH_LIGHTS
+#define RT_LIGHT_SPHERE RT_FEATURE_SPHERE_LIGHTS
+// Either kind of object light: geometry that emits, found by a ray (cl/light/emission.h).
+#define RT_FEATURE_OBJECT_LIGHTS (RT_FEATURE_MESH_LIGHTS | RT_FEATURE_SPHERE_LIGHTS)
 #define RT_MATERIAL_PLAIN 0
 #define RT_MATERIAL_MIRROR RT_FEATURE_MIRROR
 #define RT_MATERIAL_CONDUCTOR RT_FEATURE_CONDUCTOR

@@ -40,19 +40,26 @@ typedef struct Light {
   // Area: unit normal (the light emits from both faces). Directional: the unit direction
   // the light travels in. Spot: the unit axis of its cone.
   float3 normal;
-  // Point, spot: intensity (power per unit solid angle). Area, directional: radiance.
+  // Point, spot: intensity (power per unit solid angle). Area, directional, mesh, sphere:
+  // radiance.
   float3 emission;
-  float area;  // Area: |edge1 x edge2|.
+  float area;  // Area: |edge1 x edge2|. Mesh light: its world-space area.
   // Type-specific scalars. Directional: param0, a length longer than the scene's
   // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
-  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing.
+  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing. Sphere light:
+  // param0 = |det| of the instance's object-to-world transform (its volume scale).
   float param0, param1, param2;
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;
   int type;
   int index;  // Type-specific index (for example a texture or an emitting instance).
-  int pad0;
+  // Mesh light: its triangles are triangles[first .. first + count - 1], and
+  // light_cdf[cdf .. cdf + count - 1] their cumulative world-space areas over `area`.
+  int first;
+  int count;
+  int cdf;
+  int pad0, pad1;
 } Light;
 
 #define RT_LENS_SQUARE 0

@@ -13,7 +13,7 @@ namespace rt {
 // C++ and OpenCL C must agree on every byte of the shared structs.
 static_assert(sizeof(float3) == 16 && alignof(float3) == 16, "float3 must match OpenCL");
 static_assert(sizeof(Material) == 112, "Material layout");
-static_assert(sizeof(Light) == 112, "Light layout");
+static_assert(sizeof(Light) == 128, "Light layout");
 static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 128, "Instance layout");
 static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
@@ -127,6 +127,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   f.lights = tagged_lights(scene);
   // Bottom level: one BVH per mesh, whatever the number of its instances.
   std::vector<int> blas_root(scene.meshes.size(), -1);
+  std::vector<int> mesh_first(scene.meshes.size(), -1);
   std::vector<Aabb> blas_box(scene.meshes.size());
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
     const MeshDesc& mesh = scene.meshes[mi];
@@ -139,6 +140,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
       }
     std::vector<int> order;
     int offset = static_cast<int>(f.triangles.size());
+    mesh_first[mi] = offset;
     std::vector<BinaryBvhNode> binary;
     BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, binary, order);
     WideBvhResult w = collapse_bvh(binary, r.root, f.nodes);
@@ -178,6 +180,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   std::vector<Instance> unordered;
   std::vector<InstanceTextures> unordered_textures;
   std::vector<Aabb> boxes;
+  std::vector<int> object_of;  // The object each entry of `unordered` was made from.
   Aabb unit;
   unit.grow(-1, -1, -1);
   unit.grow(1, 1, 1);
@@ -199,6 +202,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
                  (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
                  (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
+    object_of.push_back(static_cast<int>(&o - scene.objects.data()));
     InstanceTextures it;
     for (int k = 0; k < RT_MAX_OBJECT_TEXTURES; ++k)
       it.ids[k] = k < static_cast<int>(o.textures.size()) ? o.textures[k] : -1;
@@ -209,11 +213,14 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   std::vector<BinaryBvhNode> binary;
   BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, binary, order);
   WideBvhResult wide_top = collapse_bvh(binary, top.root, f.nodes);
+  std::vector<int> instance_of_object(scene.objects.size(), -1);
   for (int i : order) {
+    instance_of_object[object_of[i]] = static_cast<int>(f.instances.size());
     f.instances.push_back(unordered[i]);
     f.instance_textures.push_back(unordered_textures[i]);
   }
   flatten_textures(scene, f);
+  flatten_object_lights(scene, instance_of_object, mesh_first, f);
   f.header.tlas_root = wide_top.root;
   f.stats.tlas_depth = wide_top.depth;
   f.stats.nodes = f.nodes.size();
@@ -291,6 +298,8 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
     if (m.brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) f |= RT_FEATURE_BRDF;
   }
   for (const Light& l : tagged_lights(scene)) f |= l.type;
+  for (const ObjectDesc& o : scene.objects)
+    if (o.emits) f |= o.kind == ObjectDesc::kSphere ? RT_LIGHT_SPHERE : RT_LIGHT_MESH;
   bool textured = scene.background_texture >= 0;
   for (const ObjectDesc& o : scene.objects) textured = textured || !o.textures.empty();
   if (textured) f |= RT_FEATURE_TEXTURES;

@@ -65,6 +65,13 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
 // flat.textures (src/flat_textures.cpp).
 void flatten_textures(const SceneDesc& scene, FlatScene& flat);
 
+// Appends a light to flat.lights for every emitting object (LightMesh, LightSphere) and
+// fills flat.instance_lights and flat.light_cdf (src/flat_object_lights.cpp).
+// instance_of_object[i] is object i's index in flat.instances (-1: no instance, an empty
+// mesh); mesh_first[m] is the index of mesh m's first triangle in flat.triangles.
+void flatten_object_lights(const SceneDesc& scene, const std::vector<int>& instance_of_object,
+                           const std::vector<int>& mesh_first, FlatScene& flat);
+
 // The feature bits the scene needs for `camera` (cl/features.h).
 int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options);
 

@@ -60,6 +60,9 @@ struct ObjectDesc {
   Mat4 transform;  // Object to world; for spheres it includes centre and radius.
   Vec3d motion;    // World-space translation over the shutter.
   std::vector<int> textures;  // Indices into SceneDesc::textures.
+  // LightMesh and LightSphere (hw6): the object also emits this radiance, and is a light.
+  bool emits = false;
+  Vec3d radiance;
 };
 
 // One TextureMap; `desc` holds its device parameters except the image placement.

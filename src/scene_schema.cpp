@@ -165,8 +165,17 @@ const std::vector<Rule>& rules() {
       // hw1/two_spheres.xml gives both of its spheres id 1.
       list("Objects", "Sphere", "Sphere", true, true),
       list("Objects", "MeshInstance", "MeshInstance"),
-      unsupported("Objects", "LightMesh", "this light would be missing"),
-      unsupported("Objects", "LightSphere", "this light would be missing"),
+      list("Objects", "LightMesh", "LightMesh"),
+      list("Objects", "LightSphere", "LightSphere"),
+      value("LightMesh", "Radiance"),
+      value("LightMesh", "Faces", "Faces"),
+      attribute("LightMesh", "@shadingMode"),
+      value("LightSphere", "Radiance"),
+      value("LightSphere", "Center"),
+      value("LightSphere", "Radius"),
+      // The lights are sampled where they are at time 0.
+      unsupported("LightMesh", "MotionBlur", "the light would not move"),
+      unsupported("LightSphere", "MotionBlur", "the light would not move"),
       attribute("Mesh", "@shadingMode"),
       value("Mesh", "Faces", "Faces"),
       attribute("Faces", "@plyFile"),
@@ -183,7 +192,8 @@ const std::vector<Rule>& rules() {
   // What every object may carry.
   static const std::vector<Rule> kAll = [] {
     std::vector<Rule> all = kRules;
-    for (const char* object : {"Mesh", "Triangle", "Sphere", "MeshInstance"}) {
+    for (const char* object :
+         {"Mesh", "Triangle", "Sphere", "MeshInstance", "LightMesh", "LightSphere"}) {
       all.push_back(value(object, "Material"));
       all.push_back(value(object, "Transformations"));
       all.push_back(value(object, "MotionBlur"));

@@ -46,10 +46,15 @@ RULES = [
 ]
 
 
+# Pointers into the scene's global arrays read storage, which stays float.
+STORAGE_POINTER = re.compile(r"\b(RT_GLOBAL\s+(?:const\s+)?)float(\d?)\b")
+
+
 def convert_code(code):
+    code = STORAGE_POINTER.sub(r"\1STORAGE_FLOAT\2", code)
     for pattern, repl in RULES:
         code = pattern.sub(repl, code)
-    return code
+    return code.replace("STORAGE_FLOAT", "float")
 
 
 def convert(text):

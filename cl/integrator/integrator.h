@@ -7,6 +7,7 @@
 #include "../camera.h"
 #include "../film_types.h"
 #include "../intersect.h"
+#include "../light/emission.h"
 #include "../material/material.h"
 #include "../surface.h"
 #include "direct_lighting.h"
@@ -50,6 +51,8 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
     if (task.depth == 0) RecordPrimaryHit(info, hit, s.n);
     if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && task.inside)
       task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction));
+    // An object light seen by this ray (a camera ray, or one a mirror or glass continued).
+    if (RT_HAS(sd, RT_FEATURE_OBJECT_LIGHTS)) radiance += task.weight * EmittedRadiance(sd, &s);
     Material m = EvaluateMaterial(sd, &s);
     RaySampler rs = MakeRaySampler(sk, task.key, task.depth == 0);
     // Opaque surfaces are shaded with the normal as modelled, also when seen from behind,

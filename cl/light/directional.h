@@ -14,6 +14,7 @@ RT_DEVICE LightSample SampleDirectionalLight(RT_GLOBAL const Light* light,
   // diagonal, so from any point inside the box the segment leaves it.
   ls.p_light = ctx->p + ls.wi * light->param0;
   ls.irradiance = ToReal3(light->emission);
+  ls.pdf = 0.0f;
   ls.valid = 1;
   return ls;
 }

@@ -8,7 +8,9 @@
 #include "../sampler.h"
 #include "area.h"
 #include "directional.h"
+#include "mesh_light.h"
 #include "point.h"
+#include "sphere_light.h"
 #include "spot.h"
 
 // The random dimension of a light's sample at a ray, offset from the ray's key (the
@@ -26,6 +28,10 @@ RT_DEVICE LightSample SampleLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL cons
   if (RT_HAS(sd, RT_LIGHT_DIRECTIONAL) && light->type == RT_LIGHT_DIRECTIONAL)
     return SampleDirectionalLight(light, ctx);
   if (RT_HAS(sd, RT_LIGHT_SPOT) && light->type == RT_LIGHT_SPOT) return SampleSpotLight(light, ctx);
+  if (RT_HAS(sd, RT_LIGHT_MESH) && light->type == RT_LIGHT_MESH)
+    return SampleMeshLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
+  if (RT_HAS(sd, RT_LIGHT_SPHERE) && light->type == RT_LIGHT_SPHERE)
+    return SampleSphereLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   LightSample none = LightSampleTowards(ctx->p, ctx->p, Vec3(0.0f));  // Not valid.
   return none;
 }

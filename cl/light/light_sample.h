@@ -28,6 +28,9 @@ typedef struct LightSample {
   // Irradiance the sample delivers to a surface facing wi (before the receiver's cosine,
   // which is the reflection model's), already divided by the sample's density.
   real3 irradiance;
+  // Density of wi per unit solid angle, for a path tracer's weighting; 0 for the lights
+  // that sample a single direction (point, spot, directional), which a ray never finds.
+  real pdf;
   int valid;  // 0 when the light sends nothing (the shading point lies on the light).
 } LightSample;
 
@@ -41,6 +44,7 @@ RT_DEVICE LightSample LightSampleTowards(real3 p, real3 q, real3 power) {
   ls.valid = !(dist2 <= 0.0f);
   ls.wi = Vec3(0.0f);
   ls.irradiance = Vec3(0.0f);
+  ls.pdf = 0.0f;
   if (!ls.valid) return ls;
   ls.wi = to_light * (1.0f / sqrt(dist2));
   ls.irradiance = power * (1.0f / dist2);

@@ -1,5 +1,5 @@
-// Inverse trigonometry from additions, multiplications, divisions and square roots only,
-// so that both devices round every step alike (library atan2/acos differ in the last bit
+// Trigonometry from additions, multiplications, divisions and square roots only, so that
+// both devices round every step alike (library sin/cos/atan2/acos differ in the last bit
 // between OpenCL implementations and glibc).
 #ifndef RT_UTIL_TRIG_H
 #define RT_UTIL_TRIG_H
@@ -37,6 +37,23 @@ RT_DEVICE real Atan2F(real y, real x) {
 RT_DEVICE real AcosF(real c) {
   c = fmin(RT_R(1.0), fmax(RT_R(-1.0), c));
   return Atan2F(sqrt((1.0f - c) * (1.0f + c)), c);
+}
+
+// sin and cos of 2 pi u, for u in [0, 1] (a uniform angle). u is reduced exactly to the
+// nearest quarter turn, leaving |x| <= pi/4, where the Cephes sinf and cosf polynomials
+// are accurate to about one float ulp; the quarter turn then swaps and negates them.
+RT_DEVICE void SinCos2Pi(real u, RT_PRIVATE real* s, RT_PRIVATE real* c) {
+  real v = 4.0f * u;
+  real q = floor(v + 0.5f);
+  real x = (v - q) * (RT_PI * 0.5f);
+  real z = x * x;
+  real sx = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * x + x;
+  real cx =
+      ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+      0.5f * z + 1.0f;
+  int quadrant = ((int)q) & 3;
+  *s = quadrant == 0 ? sx : (quadrant == 1 ? cx : (quadrant == 2 ? -sx : -cx));
+  *c = quadrant == 0 ? cx : (quadrant == 1 ? -sx : (quadrant == 2 ? -cx : sx));
 }
 
 #endif  // RT_UTIL_TRIG_H

@@ -72,6 +72,7 @@ class Loader {
   int material_of(const XMLElement* e) const;
   Mat4 transform_of(const XMLElement* e) const;
   Vec3d motion_of(const XMLElement* e) const;
+  Vec3d radiance_of(const XMLElement* e) const;
   int vertex_index(const XMLElement* e, double one_based, long offset = 0) const;
   int add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth, bool uvs);
   void warn(const XMLElement* e, const std::string& what) {

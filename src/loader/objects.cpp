@@ -181,6 +181,15 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
   return static_cast<int>(scene_.meshes.size()) - 1;
 }
 
+// An object light's Radiance: three non-negative numbers.
+Vec3d Loader::radiance_of(const XMLElement* e) const {
+  const XMLElement* r = child(e, "Radiance", true);
+  Vec3d v = vec3(r);
+  if (!(v.x >= 0 && v.y >= 0 && v.z >= 0))
+    fail_value(r, "is negative (light values must be >= 0)");
+  return v;
+}
+
 void Loader::read_objects(const XMLElement* scene) {
   const XMLElement* objs = child(scene, "Objects", false);
   for (auto* e = objs ? objs->FirstChildElement() : nullptr; e; e = e->NextSiblingElement()) {
@@ -189,13 +198,18 @@ void Loader::read_objects(const XMLElement* scene) {
     o.element = describe(e);
     const char* id = e->Attribute("id");
     std::string key = id ? id : "";
-    if (name == "Mesh" || name == "Triangle") {
+    // LightMesh and LightSphere are a Mesh and a Sphere that also emit (hw6).
+    if (name == "LightMesh" || name == "LightSphere") {
+      o.emits = true;
+      o.radiance = radiance_of(e);
+    }
+    if (name == "Mesh" || name == "Triangle" || name == "LightMesh") {
       o.material = material_of(e);
       const char* mode = e->Attribute("shadingMode");
       bool smooth = mode && std::string(mode) == "smooth";
       o.textures = textures_of(e);
-      o.mesh = add_mesh_from_faces(e, child(e, name == "Mesh" ? "Faces" : "Indices", true), smooth,
-                                   !o.textures.empty() && !texcoords_.empty());
+      o.mesh = add_mesh_from_faces(e, child(e, name == "Triangle" ? "Indices" : "Faces", true),
+                                   smooth, !o.textures.empty() && !texcoords_.empty());
       o.transform = transform_of(e);
       o.motion = motion_of(e);
       if (name == "Mesh") mesh_objects_[key] = static_cast<int>(scene_.objects.size());
@@ -222,7 +236,7 @@ void Loader::read_objects(const XMLElement* scene) {
       o.transform = reset ? transform_of(e) : transform_of(e) * base.transform;
       o.motion = motion_of(e);
       instance_objects_[key] = static_cast<int>(scene_.objects.size());
-    } else if (name == "Sphere") {
+    } else if (name == "Sphere" || name == "LightSphere") {
       o.kind = ObjectDesc::kSphere;
       o.material = material_of(e);
       o.textures = textures_of(e);

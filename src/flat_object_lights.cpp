@@ -1,0 +1,74 @@
+// Object lights (LightMesh, LightSphere) in the device's tagged light array: each emitting
+// object becomes a Light naming its instance, after every light of the Lights block, and
+// the instance names its light back (instance_lights) so a ray that hits it finds its
+// radiance. A mesh light also gets the cumulative world-space areas of its triangles, in
+// the order they lie in the triangle array, for sampling by area (cl/light/mesh_light.h).
+#include <cmath>
+
+#include "flat_scene.h"
+
+namespace rt {
+namespace {
+
+double determinant3(const Mat4& m) {
+  return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) -
+         m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
+         m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+}
+
+Vec3d to_vec3d(float3 v) { return {v.x, v.y, v.z}; }
+
+// Appends the mesh light's normalized cumulative areas (the last exactly 1) and returns its
+// total world-space area. The areas are those of the float triangles the devices hold.
+double append_area_cdf(const Triangle* tris, int count, const Mat4& transform,
+                       std::vector<float>& cdf) {
+  std::vector<double> sum(count);
+  double total = 0;
+  for (int k = 0; k < count; ++k) {
+    Vec3d a = transform.point(to_vec3d(tris[k].v0));
+    Vec3d b = transform.point(to_vec3d(tris[k].v1));
+    Vec3d c = transform.point(to_vec3d(tris[k].v2));
+    total += 0.5 * length(cross(b - a, c - a));
+    sum[k] = total;
+  }
+  for (int k = 0; k < count; ++k)
+    cdf.push_back(k + 1 == count ? 1.0f : static_cast<float>(sum[k] / total));
+  return total;
+}
+
+}  // namespace
+
+void flatten_object_lights(const SceneDesc& scene, const std::vector<int>& instance_of_object,
+                           const std::vector<int>& mesh_first, FlatScene& flat) {
+  // Every instance has an entry (-1 for most), so a kernel compiled with every feature
+  // reads valid data in scenes without object lights too.
+  flat.instance_lights.assign(flat.instances.size(), -1);
+  // Object lights continue the numbering of the lights that draw random numbers.
+  int sampled = 0;
+  for (const Light& l : flat.lights)
+    if (l.type != RT_LIGHT_POINT && l.type != RT_LIGHT_DIRECTIONAL && l.type != RT_LIGHT_SPOT)
+      ++sampled;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const ObjectDesc& o = scene.objects[i];
+    if (!o.emits || instance_of_object[i] < 0) continue;
+    Light l{};
+    l.index = instance_of_object[i];
+    l.emission = to_float3(o.radiance);
+    l.sample_index = sampled++;
+    if (o.kind == ObjectDesc::kSphere) {
+      l.type = RT_LIGHT_SPHERE;
+      l.param0 = static_cast<float>(std::fabs(determinant3(o.transform)));
+    } else {
+      l.type = RT_LIGHT_MESH;
+      l.first = mesh_first[o.mesh];
+      l.count = static_cast<int>(scene.meshes[o.mesh].triangles.size());
+      l.cdf = static_cast<int>(flat.light_cdf.size());
+      l.area = static_cast<float>(
+          append_area_cdf(&flat.triangles[l.first], l.count, o.transform, flat.light_cdf));
+    }
+    flat.instance_lights[l.index] = static_cast<int>(flat.lights.size());
+    flat.lights.push_back(l);
+  }
+}
+
+}  // namespace rt
