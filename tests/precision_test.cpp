@@ -95,26 +95,29 @@ TEST_P(PrecisionDouble, KernelMatchesTheCpuReferenceBitForBit) {
   EXPECT_EQ(differing_pixels(gpu, cpu), 0u) << c.scene;
   // Not the float image: the double build really ran.
   rt::RenderResult in_float = rt::test::render_cpu(load(c, false));
-  if (!rt::test::test_precision_double()) EXPECT_GT(differing_pixels(in_float, cpu), 0u) << c.scene;
+  if (!rt::test::test_precision_double()) {
+    EXPECT_GT(differing_pixels(in_float, cpu), 0u) << c.scene;
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(CourseScenes, PrecisionDouble,
-                         ::testing::Values(Case{"/hw1/simple.xml", 48, 4},
-                                           Case{"/hw2/spheres.xml", 48, 4},
-                                           Case{"/hw1/bunny.xml", 48, 2},
-                                           Case{"/hw3/cornellbox_area.xml", 32, 9},
-                                           Case{"/hw3/cornellbox_brushed_metal.xml", 32, 9},
-                                           Case{"/hw3/metal_glass_plates.xml", 32, 9},
-                                           Case{"/hw3/spheres_dof.xml", 32, 9},
-                                           Case{"/hw3/cornellbox_boxes_dynamic.xml", 32, 9},
-                                           Case{"/hw4/ellipsoids_texture.xml", 32, 1},
-                                           Case{"/hw4/cube_perlin_bump.xml", 32, 1},
-                                           Case{"/hw4/brickwall_with_normalmap.xml", 32, 1}),
-                         [](const ::testing::TestParamInfo<Case>& info) {
-                           std::string name = info.param.scene;
-                           name = name.substr(name.rfind('/') + 1);
-                           name = name.substr(0, name.find('.'));
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    CourseScenes, PrecisionDouble,
+    ::testing::Values(Case{"/hw1/simple.xml", 48, 4}, Case{"/hw2/spheres.xml", 48, 4},
+                      Case{"/hw1/bunny.xml", 48, 2}, Case{"/hw3/cornellbox_area.xml", 32, 9},
+                      Case{"/hw3/cornellbox_brushed_metal.xml", 32, 9},
+                      Case{"/hw3/metal_glass_plates.xml", 32, 9},
+                      Case{"/hw3/spheres_dof.xml", 32, 9},
+                      Case{"/hw3/cornellbox_boxes_dynamic.xml", 32, 9},
+                      Case{"/hw4/ellipsoids_texture.xml", 32, 1},
+                      Case{"/hw4/cube_perlin_bump.xml", 32, 1},
+                      Case{"/hw4/brickwall_with_normalmap.xml", 32, 1},
+                      Case{"/hw6/directLighting/cornellbox_jaroslav_glossy_area_sphere.xml", 32, 4},
+                      Case{"/hw6/directLighting/cornellbox_jaroslav_diffuse_area.xml", 32, 4}),
+    [](const ::testing::TestParamInfo<Case>& info) {
+      std::string name = info.param.scene;
+      name = name.substr(name.rfind('/') + 1);
+      name = name.substr(0, name.find('.'));
+      return name;
+    });
 
 }  // namespace
