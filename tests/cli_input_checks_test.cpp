@@ -117,12 +117,10 @@ TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
        "<AmbientLight>25 25 25</AmbientLight><SphericalDirectionalLight id=\"1\"><ImageId>1"
        "</ImageId></SphericalDirectionalLight>"},
       {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
-      {"</Objects>",
-       "<LightSphere id=\"2\"><Material>1</Material><Center>1</Center><Radius>1"
-       "</Radius><Radiance>1 1 1</Radiance></LightSphere></Objects>"},
+      {"<VertexData>", "<VertexData binaryFile=\"vertices.bin\">"},
       {"<ImageName>", "<Renderer>PathTracing</Renderer><ImageName>"},
   };
-  const char* names[] = {"SphericalDirectionalLight", "handedness", "LightSphere", "Renderer"};
+  const char* names[] = {"SphericalDirectionalLight", "handedness", "binaryFile", "Renderer"};
   for (int i = 0; i < 4; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);
