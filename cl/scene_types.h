@@ -133,6 +133,9 @@ typedef struct TriangleNormals {
 #define RT_FLAG_CULL_BACK_FACES 1
 #define RT_FLAG_BACKGROUND_ON_SECONDARY_MISS 2
 #define RT_FLAG_FRESNEL_CHOICE 4  // Dielectrics follow one ray, chosen by Fresnel.
+// Sphere lights deliver L / pdf in world space; otherwise L times their object-space solid
+// angle, the course's convention (cl/light/sphere_light.h).
+#define RT_FLAG_EXACT_ELLIPSOID_LIGHTS 8
 
 typedef struct SceneHeader {
   Camera camera;

@@ -29,7 +29,14 @@ OptionTable<RenderOptions> make_device_table() {
               std::vector<std::pair<std::string, bool>>{{"split", false}, {"choose", true}},
               RT_FIELD(fresnel_choice),
               "split (as the course): follow both the reflected and the refracted ray; "
-              "choose: follow one, picked with the Fresnel probability");
+              "choose: follow one, picked with the Fresnel probability")
+      .choice("--ellipsoid-lights",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"exact", true}},
+              RT_FIELD(exact_ellipsoid_lights),
+              "course: a LightSphere seen through a non-uniform scale lights a point by its "
+              "radiance times the solid angle the untransformed sphere subtends in object "
+              "space, as the course's images show; exact: by its true solid angle (spheres "
+              "agree either way)");
   t.section("Geometry and shading", Reach::kDevice)
       .flag("--cull-back-faces", RT_FIELD(cull_back_faces),
             "camera and reflected rays ignore triangles facing away (the course's hw1 images "

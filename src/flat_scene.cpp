@@ -246,7 +246,8 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   h.filter_sigma = options.filter_sigma;
   h.flags = (options.cull_back_faces ? RT_FLAG_CULL_BACK_FACES : 0) |
             (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0) |
-            (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0);
+            (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0) |
+            (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0);
   f.fast_math = options.fast_math;
   f.double_precision = options.double_precision;
   f.stats.bvh_build_ms =

@@ -26,6 +26,7 @@ struct RenderOptions {
   int lens = RT_LENS_SQUARE;
   bool use_scene_epsilon = true;  // Off: rely on the scale-aware offset alone.
   bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
+  bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
   bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   bool double_precision = false;  // Computation in double (cl/util/real.h); storage stays float.
   StopRule stop;

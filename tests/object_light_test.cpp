@@ -231,7 +231,7 @@ TEST(SphereLight, EllipsoidDensityAgainstBruteForce) {
   const Light& light = FirstObjectLight(f);
   const Instance& inst = f.flat.instances[light.index];
   float3 p = make_float3(0.7f, 1.1f, 1.3f);
-  double sum = 0, sum2 = 0, hits = 0;
+  double sum = 0, sum2 = 0, hits = 0, e_sum = 0, e_sum2 = 0;
   const int n = 400000;
   for (int i = 0; i < n; ++i) {
     float2 u = Uniform2(static_cast<uint>(i) + 1000000u);
@@ -242,14 +242,15 @@ TEST(SphereLight, EllipsoidDensityAgainstBruteForce) {
     float3 o = TransformPoint(inst.world_to_object, p),
            d = TransformVector(inst.world_to_object, w);
     double a = Dot(d, d), b = Dot(o, d), c = Dot(o, o) - 1.0, disc = b * b - a * c;
-    double v = 0;
+    double v = 0, e = 0;
     if (disc > 0 && -b - std::sqrt(disc) > 0) {
       double t = (-b - std::sqrt(disc)) / a;
       float3 q = p + w * static_cast<float>(t);
       v = SphereLightPdf(&f.sd, &light, p, q) * 4 * M_PI;
+      e = 3.0 * std::max(0.0, -double(w.z)) * 4 * M_PI;  // L cos / uniform pdf.
       ++hits;
     }
-    sum += v, sum2 += v * v;
+    sum += v, sum2 += v * v, e_sum += e, e_sum2 += e * e;
   }
   double mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / n);
   ASSERT_GT(hits, 1000);
@@ -259,6 +260,20 @@ TEST(SphereLight, EllipsoidDensityAgainstBruteForce) {
   Estimate est = Sample(f, p, make_float3(0, 0, -1), 100000);
   EXPECT_EQ(est.invalid, 0);
   EXPECT_NEAR(est.omega, omega, 4.5 * std::hypot(omega_se, est.omega_se) + 1e-4 * omega);
+  // --ellipsoid-lights exact: the irradiance on a surface facing -z, against brute force.
+  f.flat.header.flags |= RT_FLAG_EXACT_ELLIPSOID_LIGHTS;
+  double e = e_sum / n, e_se = std::sqrt((e_sum2 / n - e * e) / n);
+  Estimate exact = Sample(f, p, make_float3(0, 0, -1), 100000);
+  EXPECT_NEAR(exact.e, e, 4.5 * std::hypot(e_se, exact.e_se)) << "se " << e_se;
+  // The course's convention: radiance times the object-space cone's solid angle, here
+  // (with the point above the ellipsoid's flat axis) well below the exact irradiance.
+  f.flat.header.flags &= ~RT_FLAG_EXACT_ELLIPSOID_LIGHTS;
+  float3 pc = TransformPoint(inst.world_to_object, p);
+  double omega_obj = 2 * M_PI * (1 - std::sqrt(1 - 1 / Dot(pc, pc)));
+  LightSampleContext ctx = MakeLightSampleContext(p, make_float3(0, 0, -1), make_float3(0, 0, -1));
+  LightSample ls = SampleSphereLight(&f.sd, &light, &ctx, make_float2(0.3f, 0.6f));
+  EXPECT_NEAR(ls.irradiance.x, 3.0 * omega_obj, 1e-5 * 3.0 * omega_obj);
+  EXPECT_LT(Sample(f, p, make_float3(0, 0, -1), 100000).e, 0.9 * exact.e);
 }
 
 // The OpenCL kernel against the CPU reference on the course's object-light scenes, at

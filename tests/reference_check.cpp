@@ -35,9 +35,10 @@ namespace {
 struct Args {
   std::string criterion = "hw12";
   int camera = 0;
-  double budget = 0;         // Samples to spend; 0: the whole image.
-  double min_identical = 0;  // Percent of byte-identical pixels; 0: the criterion's own.
-  double max_bias = -1;      // Largest |mean bias| of hw3, levels; < 0: the criterion's own.
+  double budget = 0;          // Samples to spend; 0: the whole image.
+  double min_identical = 0;   // Percent of byte-identical pixels; 0: the criterion's own.
+  double max_bias = -1;       // Largest |mean bias| of hw3, levels; < 0: the criterion's own.
+  double max_block_mae = -1;  // Largest 4x4-downsampled MAE of `block`; < 0: its own.
   rt::Quantize quantize = rt::Quantize::kTruncate;
   rt::RenderOptions render;
 };
@@ -65,14 +66,19 @@ struct PixelEncoder {
 constexpr double kHw12Mae = 0.2, kHw12Over8 = 0.005, kHw12Identical = 99.9;
 // hw3: noisy images, compared after a 4x4 box downsample, and by their mean bias.
 constexpr double kHw3DownMae = 0.6, kHw3Mae = 2.0, kHw3Bias = 0.05;
+// block: images whose reference is itself a noisy render (hw6 object lights, 100 spp),
+// which two correct renders do not match pixel for pixel: only the 4x4-downsampled MAE
+// (issue 16's measure and target) and the mean bias are checked.
+constexpr double kBlockDownMae = 2.0, kBlockBias = 0.3;
 
 std::string criterion_help() {
-  char buf[400];
+  char buf[600];
   std::snprintf(buf, sizeof buf,
                 "hw12 (one sample per pixel, deterministic): MAE <= %g levels, <= %g %% of pixels "
                 "off by more than 8, and --min-identical; hw3 (noisy): after a 4x4 box downsample "
-                "MAE <= %g, full-resolution MAE <= %g, |mean bias| <= %g",
-                kHw12Mae, 100 * kHw12Over8, kHw3DownMae, kHw3Mae, kHw3Bias);
+                "MAE <= %g, full-resolution MAE <= %g, |mean bias| <= %g; block (a noisy "
+                "reference): after a 4x4 box downsample MAE <= --max-block-mae, |mean bias| <= %g",
+                kHw12Mae, 100 * kHw12Over8, kHw3DownMae, kHw3Mae, kHw3Bias, kBlockBias);
   return buf;
 }
 
@@ -84,7 +90,8 @@ rt::OptionTable<Args> make_table() {
       "Exit status: 0 pass, 1 fail, 2 bad usage, 77 skipped (files missing).");
   t.section("Check")
       .choice("--criterion",
-              std::vector<std::pair<std::string, std::string>>{{"hw12", "hw12"}, {"hw3", "hw3"}},
+              std::vector<std::pair<std::string, std::string>>{
+                  {"hw12", "hw12"}, {"hw3", "hw3"}, {"block", "block"}},
               RT_FIELD(criterion), criterion_help())
       .real("--min-identical", "P", rt::Range::closed(0, 100), RT_FIELD(min_identical),
             "percent of pixels that must be byte-identical to the reference")
@@ -92,6 +99,9 @@ rt::OptionTable<Args> make_table() {
       .real("--max-bias", "B", rt::Range::closed(0, 255), RT_FIELD(max_bias),
             "largest |mean bias| (render minus reference) an hw3 image may have, in levels")
       .default_is(std::to_string(kHw3Bias).substr(0, 4))
+      .real("--max-block-mae", "M", rt::Range::closed(0, 255), RT_FIELD(max_block_mae),
+            "largest 4x4-downsampled MAE a `block` image may have, in levels")
+      .default_is(std::to_string(kBlockDownMae).substr(0, 3))
       .real("--budget", "SAMPLES", rt::Range::positive(), RT_FIELD(budget),
             "render a regular subset of pixels (or of 4x4 blocks for hw3) costing about this "
             "many samples")
@@ -170,8 +180,8 @@ int main(int argc, char** argv) {
                    ref.width, ref.height);
       return 1;
     }
-    bool hw3 = a.criterion == "hw3";
-    int block = hw3 ? 4 : 1;
+    bool hw3 = a.criterion == "hw3", by_block = a.criterion == "block";
+    int block = hw3 || by_block ? 4 : 1;
     double total = static_cast<double>(cam.width) * cam.height * cam.samples;
     int stride =
         a.budget > 0 ? std::max(1, static_cast<int>(std::ceil(std::sqrt(total / a.budget)))) : 1;
@@ -203,10 +213,15 @@ int main(int argc, char** argv) {
         files[1].c_str(), cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride),
         full.mae, 100 * full.frac_over, full.max_abs, 100 * full.frac_identical, bias, down.mae,
         100 * down.frac_over);
-    double min_identical = a.min_identical > 0 ? a.min_identical : hw3 ? 0 : kHw12Identical;
+    double min_identical = a.min_identical > 0 ? a.min_identical
+                           : hw3 || by_block   ? 0
+                                               : kHw12Identical;
     bool ok = hw3 ? (down.mae <= kHw3DownMae && full.mae <= kHw3Mae &&
                      std::abs(bias) <= (a.max_bias >= 0 ? a.max_bias : kHw3Bias))
                   : (full.mae <= kHw12Mae && full.frac_over <= kHw12Over8);
+    if (by_block)
+      ok = down.mae <= (a.max_block_mae >= 0 ? a.max_block_mae : kBlockDownMae) &&
+           std::abs(bias) <= (a.max_bias >= 0 ? a.max_bias : kBlockBias);
     ok = ok && 100 * full.frac_identical >= min_identical;
     std::printf("%s (criterion %s)\n", ok ? "PASS" : "FAIL", a.criterion.c_str());
     return ok ? 0 : 1;

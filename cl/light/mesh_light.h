@@ -1,6 +1,6 @@
 // A LightMesh (hw6): a triangle mesh that emits radiance L from the front of each face,
-// the side (v1 - v0) x (v2 - v0) points to (the course's images show the ceiling light lit
-// from below only; see README, "Object lights"). It is sampled uniformly by world-space
+// the side (v1 - v0) x (v2 - v0) points to (every face of the course's mesh lights points
+// into the room; README, "Object lights"). It is sampled uniformly by world-space
 // area: a triangle with the probability of its share of the area (a binary search of the
 // cumulative areas the host stores in light_cdf), then a point uniformly inside it, so
 // every point of the mesh has density 1 / A. One 2D sample drives both choices, so the
