@@ -30,6 +30,7 @@
 #include <thread>
 #include <vector>
 
+#include "device/cpu_kernel.h"
 #include "flat_scene.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
@@ -106,7 +107,7 @@ rt::ImageF render_subset(const rt::FlatScene& flat, const Subset& sub) {
         for (int col = 0; col < sub.width; ++col) {
           PixelAccum acc{};
           PrimaryInfo info;
-          AccumulatePixel(&sd, sub.x(col), sub.y(row), 0, cam.samples, &acc, &info);
+          rt::accumulate_pixel_float(&sd, sub.x(col), sub.y(row), 0, cam.samples, &acc, &info);
           float* o = &out.pixels[(static_cast<size_t>(row) * sub.width + col) * 3];
           o[0] = acc.sum.x / acc.sum.w;
           o[1] = acc.sum.y / acc.sum.w;

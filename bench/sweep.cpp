@@ -17,12 +17,12 @@
 #include <string>
 #include <vector>
 
+#include "device/device.h"
 #include "family.h"
 #include "flat_scene.h"
+#include "integrator/render_scheduler.h"
 #include "io/moments.h"
 #include "render.h"
-#include "device/device.h"
-#include "integrator/render_scheduler.h"
 #include "util/args.h"
 #include "welch.h"
 
@@ -115,6 +115,10 @@ std::vector<Config> Grid(bool has_cl, bool dielectric) {
   rt::RenderOptions fast = base;
   fast.fast_math = true;
   add("math", "-cl-fast-relaxed-math", "cl", fast);
+  rt::RenderOptions in_double = base;
+  in_double.double_precision = true;
+  add("precision", "--precision double", "cpu", in_double);
+  add("precision", "--precision double", "cl", in_double);
   for (auto [bins, leaf] :
        {std::pair{4, 1}, std::pair{8, 2}, std::pair{32, 8}, std::pair{64, 16}}) {
     rt::RenderOptions o = base;

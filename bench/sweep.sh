@@ -24,6 +24,7 @@ plot "$out.tsv" using (strcol(1) eq "spp" && strcol(3) eq "cpu" ? \$6 : 1/0):7 w
      "$out.tsv" using (strcol(1) eq "spp" && strcol(3) eq "cl" ? \$6 : 1/0):7 with linespoints title "OpenCL specialized, spp 1-64", \
      "$out.tsv" using (strcol(1) eq "kernel" ? \$6 : 1/0):7 with points pt 5 ps 1.5 title "OpenCL generic, 16 spp", \
      "$out.tsv" using (strcol(1) eq "math" ? \$6 : 1/0):7 with points pt 9 ps 1.5 title "OpenCL fast math, 16 spp", \
+     "$out.tsv" using (strcol(1) eq "precision" ? \$6 : 1/0):7 with points pt 11 ps 1.5 title "--precision double, 16 spp (both devices)", \
      "$out.tsv" using (strcol(1) eq "bvh" && strcol(3) eq "cpu" ? \$6 : 1/0):7 with points pt 2 title "CPU, BVH variants, 16 spp", \
      "$out.tsv" using (strcol(1) eq "bvh" && strcol(3) eq "cl" ? \$6 : 1/0):7 with points pt 3 title "OpenCL, BVH variants, 16 spp", \
      "$out.tsv" using (strcol(1) eq "dielectric" ? \$6 : 1/0):7 with points pt 7 title "choose by Fresnel (16, 64 spp)"

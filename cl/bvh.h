@@ -10,6 +10,7 @@
 #include "features.h"
 #include "shapes.h"
 #include "transform.h"
+#include "util/lanes.h"
 
 // Deep enough for a binned-SAH BVH of any mesh the build accepts: the builder caps the
 // binary depth of each level at RT_BVH_MAX_DEPTH (src/bvh_build.cpp checks it), collapsing
@@ -20,30 +21,29 @@
 // No node index or leaf reference takes this value; it asks the loop to pop the stack.
 #define RT_BVH_POP (-2147483647 - 1)
 
-RT_DEVICE LaneFloat LaneSplat(float x) {
-#ifdef __OPENCL_C_VERSION__
-  return (LaneFloat)(x);
-#else
-  return x - LaneFloat{};  // Broadcasts x; x - (+0) is x for every x, -0 included.
-#endif
-}
-
 // The ray as the node test sees it: origin, reciprocal direction, and for each axis which
 // of a node's bounds (BvhNode.bounds) the ray meets first: the low face when the
-// direction is positive, the high face when negative (Williams et al. 2005).
+// direction is positive, the high face when negative (Williams et al. 2005). Origin and
+// reciprocal direction are kept broadcast to every lane, so the node test is lane
+// operations only (broadcasting per node went through memory in the double build).
 typedef struct NodeRay {
-  float3 o, inv_d;
+  LaneReal ox, oy, oz, ix, iy, iz;
   int near_x, near_y, near_z, far_x, far_y, far_z;
 } NodeRay;
 
-RT_DEVICE NodeRay MakeNodeRay(float3 o, float3 d) {
+RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
   NodeRay r;
-  r.o = o;
   // A zero component gives +-inf, which the node test handles; -0 keeps its sign.
-  r.inv_d = make_float3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
-  r.near_x = r.inv_d.x < 0.0f ? 3 : 0;
-  r.near_y = r.inv_d.y < 0.0f ? 4 : 1;
-  r.near_z = r.inv_d.z < 0.0f ? 5 : 2;
+  real3 inv_d = make_real3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+  r.ox = LaneSplat(o.x);
+  r.oy = LaneSplat(o.y);
+  r.oz = LaneSplat(o.z);
+  r.ix = LaneSplat(inv_d.x);
+  r.iy = LaneSplat(inv_d.y);
+  r.iz = LaneSplat(inv_d.z);
+  r.near_x = inv_d.x < 0.0f ? 3 : 0;
+  r.near_y = inv_d.y < 0.0f ? 4 : 1;
+  r.near_z = inv_d.z < 0.0f ? 5 : 2;
   r.far_x = 3 - r.near_x;
   r.far_y = 5 - r.near_y;
   r.far_z = 7 - r.near_z;
@@ -55,39 +55,39 @@ RT_DEVICE NodeRay MakeNodeRay(float3 o, float3 d) {
 // distance is enlarged by 2 * gamma(3) (pbrt-v4, Bounds3::IntersectP) so rounding never
 // culls a box the ray actually touches.
 RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r,
-                                      float tmax, RT_PRIVATE LaneFloat* tnear) {
-  float3 o = r->o, inv_d = r->inv_d;
-  LaneFloat nx = (node->bounds[r->near_x] - o.x) * inv_d.x;
-  LaneFloat ny = (node->bounds[r->near_y] - o.y) * inv_d.y;
-  LaneFloat nz = (node->bounds[r->near_z] - o.z) * inv_d.z;
-  LaneFloat fx = (node->bounds[r->far_x] - o.x) * inv_d.x;
-  LaneFloat fy = (node->bounds[r->far_y] - o.y) * inv_d.y;
-  LaneFloat fz = (node->bounds[r->far_z] - o.z) * inv_d.z;
+                                      real tmax, RT_PRIVATE LaneReal* tnear) {
+  LaneReal nx = (LaneToReal(node->bounds[r->near_x]) - r->ox) * r->ix;
+  LaneReal ny = (LaneToReal(node->bounds[r->near_y]) - r->oy) * r->iy;
+  LaneReal nz = (LaneToReal(node->bounds[r->near_z]) - r->oz) * r->iz;
+  LaneReal fx = (LaneToReal(node->bounds[r->far_x]) - r->ox) * r->ix;
+  LaneReal fy = (LaneToReal(node->bounds[r->far_y]) - r->oy) * r->iy;
+  LaneReal fz = (LaneToReal(node->bounds[r->far_z]) - r->oz) * r->iz;
   // A ray in the plane of a face (zero direction component, origin on the face) gives
   // 0 * inf = NaN there. It stays inside that slab for every t, so the slab must constrain
   // nothing, and it does not: the other face gives -inf as an entry or +inf as an exit,
   // and a NaN enters LaneMax / LaneMin as the first operand, which they drop (they return
   // the second operand when either is NaN).
-  LaneFloat tn = LaneMax(nx, LaneMax(ny, LaneMax(nz, LaneSplat(0.0f))));
-  LaneFloat tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
+  LaneReal tn = LaneMax(nx, LaneMax(ny, LaneMax(nz, LaneSplat(0.0f))));
+  LaneReal tf = LaneMin(fx, LaneMin(fy, LaneMin(fz, LaneSplat(tmax))));
   tf = tf * 1.0000004f;
   *tnear = tn;
-  return tn <= tf;  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
+  // Empty lanes hold inverted boxes (src/bvh_wide.cpp) and always miss.
+  return LaneMaskToInt(tn <= tf);
 }
 
 // Tests a node's children and returns the nearest child hit (RT_BVH_POP if none), pushing
 // the others farthest first so they pop nearest first. Equal distances keep lane order,
 // the same on both devices.
-RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, float tmax,
+RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, real tmax,
                             RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
-  LaneFloat tnear;
+  LaneReal tnear;
   LaneInt hits = IntersectChildBoxes(node, r, tmax, &tnear);
-  float lane_t[RT_BVH_WIDTH];
+  real lane_t[RT_BVH_WIDTH];
   int lane_hit[RT_BVH_WIDTH], lane_child[RT_BVH_WIDTH];
-  LaneStoreF(tnear, lane_t);
+  LaneStoreR(tnear, lane_t);
   LaneStoreI(hits, lane_hit);
   LaneStoreI(node->child, lane_child);
-  float sorted_t[RT_BVH_WIDTH];
+  real sorted_t[RT_BVH_WIDTH];
   int sorted_child[RT_BVH_WIDTH];
   int n = 0;
   for (int i = 0; i < RT_BVH_WIDTH; ++i) {
@@ -106,9 +106,9 @@ RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const Node
 }
 
 // World-space origin of an instance's ray at the ray's time.
-RT_DEVICE float3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
-  float3 o = ray.origin;
-  if ((inst->flags & RT_INSTANCE_MOVING) != 0) o = o - inst->motion * ray.time;
+RT_DEVICE real3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
+  real3 o = ray.origin;
+  if ((inst->flags & RT_INSTANCE_MOVING) != 0) o = o - ToReal3(inst->motion) * ray.time;
   return o;
 }
 
@@ -120,10 +120,10 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   int sp = 0;
   int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
   int instance = -1;                // The instance whose BVH we are in, or -1 at the top level.
-  float3 o = ray.origin, d = ray.direction;
+  real3 o = ray.origin, d = ray.direction;
   NodeRay nr = MakeNodeRay(o, d);
   TriangleRay tr = MakeTriangleRay(o, d);
-  float tmax = ray.tmax;
+  real tmax = ray.tmax;
   hit->instance = -1;
   hit->t = tmax;
   if (ref < 0) return 0;
@@ -135,14 +135,14 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       // A top-level leaf: exactly one instance.
       int ii = RtLeafFirst(ref);
       RT_GLOBAL const Instance* inst = &sd->instances[ii];
-      float3 io = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
-      float3 id = ray.direction;
+      real3 io = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
+      real3 id = ray.direction;
       if (RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0) {
         io = TransformPoint(inst->world_to_object, io);
         id = TransformVector(inst->world_to_object, id);
       }
       if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {
-        float t;
+        real t;
         if (IntersectUnitSphere(io, id, tmax, &t)) {
           tmax = t;
           hit->t = t;
@@ -163,8 +163,9 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       int first = RtLeafFirst(ref), end = first + RtLeafCount(ref);
       for (int i = first; i < end; ++i) {
         RT_GLOBAL const Triangle* tri = &sd->triangles[i];
-        float t, b1, b2;
-        if (IntersectTriangle(&tr, tri->v0, tri->v1, tri->v2, tmax, cull, &t, &b1, &b2)) {
+        real t, b1, b2;
+        if (IntersectTriangle(&tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull,
+                              &t, &b1, &b2)) {
           tmax = t;
           hit->t = t;
           hit->instance = instance;

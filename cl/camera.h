@@ -9,10 +9,10 @@
 
 // Maps [0,1)^2 to the unit disk with Shirley and Chiu's concentric map, so strata stay
 // compact (used only by the optional disk lens).
-RT_DEVICE float2 SampleConcentricDisk(float2 u) {
-  float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
-  if (ox == 0.0f && oy == 0.0f) return make_float2(0.0f, 0.0f);
-  float r, theta;
+RT_DEVICE real2 SampleConcentricDisk(real2 u) {
+  real ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
+  if (ox == 0.0f && oy == 0.0f) return make_real2(0.0f, 0.0f);
+  real r, theta;
   if (fabs(ox) > fabs(oy)) {
     r = ox;
     theta = (RT_PI / 4.0f) * (oy / ox);
@@ -20,32 +20,33 @@ RT_DEVICE float2 SampleConcentricDisk(float2 u) {
     r = oy;
     theta = (RT_PI / 2.0f) - (RT_PI / 4.0f) * (ox / oy);
   }
-  return make_float2(r * cos(theta), r * sin(theta));
+  return make_real2(r * CosR(theta), r * SinR(theta));
 }
 
 // The ray through film position (px, py) in pixels (x right, y down) at shutter time
 // `time`, through lens sample `lens` in [0,1)^2.
-RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, float px, float py, float2 lens,
-                                float time) {
+RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real px, real py, real2 lens,
+                                real time) {
   RT_GLOBAL const Camera* cam = &sd->header->camera;
-  float su = (cam->right - cam->left) * (px / (float)cam->width);
-  float sv = (cam->top - cam->bottom) * (py / (float)cam->height);
+  real su = (cam->right - cam->left) * (px / (real)cam->width);
+  real sv = (cam->top - cam->bottom) * (py / (real)cam->height);
   // Relative to the camera: subtracting its position from an absolute film point would
   // cancel away the film's detail far from the origin.
-  float3 film = cam->u * (cam->left + su) + cam->v * (cam->top - sv) - cam->w * cam->near_distance;
-  float3 dir = Normalize(film);
-  Ray ray = MakeRay(cam->position, dir, RT_INFINITY, time);
+  real3 film = ToReal3(cam->u) * (cam->left + su) + ToReal3(cam->v) * (cam->top - sv) -
+               ToReal3(cam->w) * cam->near_distance;
+  real3 dir = Normalize(film);
+  Ray ray = MakeRay(ToReal3(cam->position), dir, RT_INFINITY, time);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {
     // The focal plane lies focus_distance along the gaze; every lens point aims at where
     // the pinhole ray meets it.
-    float tfocus = cam->focus_distance / Dot(dir, -cam->w);
-    float2 l = make_float2(lens.x - 0.5f, lens.y - 0.5f);
+    real tfocus = cam->focus_distance / Dot(dir, -ToReal3(cam->w));
+    real2 l = make_real2(lens.x - 0.5f, lens.y - 0.5f);
     if (cam->lens == RT_LENS_DISK) {
-      float2 disk = SampleConcentricDisk(lens);
-      l = make_float2(0.5f * disk.x, 0.5f * disk.y);
+      real2 disk = SampleConcentricDisk(lens);
+      l = make_real2(0.5f * disk.x, 0.5f * disk.y);
     }
-    float3 lens_offset = (cam->u * l.x + cam->v * l.y) * cam->aperture;
-    ray.origin = cam->position + lens_offset;
+    real3 lens_offset = (ToReal3(cam->u) * l.x + ToReal3(cam->v) * l.y) * cam->aperture;
+    ray.origin = ToReal3(cam->position) + lens_offset;
     ray.direction = Normalize(dir * tfocus - lens_offset);
   }
   return ray;
@@ -56,7 +57,7 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, float px, float 
 // and its ray. The renderer and bench/embree_bench.cpp take their camera rays from here.
 typedef struct CameraSample {
   SampleKey key;
-  float2 film;
+  real2 film;
   Ray ray;
 } CameraSample;
 
@@ -67,14 +68,14 @@ RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int 
   CameraSample cs;
   cs.key = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples, (uint)cam->strata,
                          h->seed);
-  cs.film = make_float2(0.5f, 0.5f);
+  cs.film = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1)
     cs.film = Stratified2D(cs.key, RT_DIM_PIXEL);
-  float2 lens = make_float2(0.5f, 0.5f);
+  real2 lens = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)) lens = Stratified2D(cs.key, RT_DIM_LENS);
-  float time = 0.0f;
+  real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR)) time = Stratified1D(cs.key, RT_DIM_TIME);
-  cs.ray = GenerateCameraRay(sd, (float)x + cs.film.x, (float)y + cs.film.y, lens, time);
+  cs.ray = GenerateCameraRay(sd, (real)x + cs.film.x, (real)y + cs.film.y, lens, time);
   return cs;
 }
 

@@ -48,16 +48,32 @@ struct alignas(8) float2 {
 inline float3 make_float3(float x, float y, float z) { return float3{x, y, z, 0.0f}; }
 inline float2 make_float2(float x, float y) { return float2{x, y}; }
 
-inline float3 operator+(float3 a, float3 b) { return make_float3(a.x + b.x, a.y + b.y, a.z + b.z); }
-inline float3 operator-(float3 a, float3 b) { return make_float3(a.x - b.x, a.y - b.y, a.z - b.z); }
-inline float3 operator*(float3 a, float3 b) { return make_float3(a.x * b.x, a.y * b.y, a.z * b.z); }
-inline float3 operator/(float3 a, float3 b) { return make_float3(a.x / b.x, a.y / b.y, a.z / b.z); }
-inline float3 operator*(float3 a, float s) { return make_float3(a.x * s, a.y * s, a.z * s); }
-inline float3 operator*(float s, float3 a) { return make_float3(a.x * s, a.y * s, a.z * s); }
-inline float3 operator/(float3 a, float s) { return make_float3(a.x / s, a.y / s, a.z / s); }
-inline float3 operator-(float3 a) { return make_float3(-a.x, -a.y, -a.z); }
-inline float3& operator+=(float3& a, float3 b) { return a = a + b; }
-inline float3& operator*=(float3& a, float3 b) { return a = a * b; }
+// The double vectors of `--precision double` (cl/util/real.h). They live in private
+// memory only, never in a buffer, so they carry no padding.
+struct double3 {
+  double x, y, z;
+};
+struct double2 {
+  double x, y;
+};
+inline double3 make_double3(double x, double y, double z) { return double3{x, y, z}; }
+inline double2 make_double2(double x, double y) { return double2{x, y}; }
+
+// The component-wise operators OpenCL C has built in, for one 3-vector type V of scalar S.
+#define RT_VEC3_OPERATORS(V, S, MAKE)                                            \
+  inline V operator+(V a, V b) { return MAKE(a.x + b.x, a.y + b.y, a.z + b.z); } \
+  inline V operator-(V a, V b) { return MAKE(a.x - b.x, a.y - b.y, a.z - b.z); } \
+  inline V operator*(V a, V b) { return MAKE(a.x * b.x, a.y * b.y, a.z * b.z); } \
+  inline V operator/(V a, V b) { return MAKE(a.x / b.x, a.y / b.y, a.z / b.z); } \
+  inline V operator*(V a, S s) { return MAKE(a.x * s, a.y * s, a.z * s); }       \
+  inline V operator*(S s, V a) { return MAKE(a.x * s, a.y * s, a.z * s); }       \
+  inline V operator/(V a, S s) { return MAKE(a.x / s, a.y / s, a.z / s); }       \
+  inline V operator-(V a) { return MAKE(-a.x, -a.y, -a.z); }                     \
+  inline V& operator+=(V& a, V b) { return a = a + b; }                          \
+  inline V& operator*=(V& a, V b) { return a = a * b; }
+RT_VEC3_OPERATORS(float3, float, make_float3)
+RT_VEC3_OPERATORS(double3, double, make_double3)
+#undef RT_VEC3_OPERATORS
 
 // Scalar maths under the names OpenCL C gives them. Vector helpers (dot, cross,
 // normalize) live in util/math.h and are written out by hand for both devices, because

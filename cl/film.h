@@ -3,19 +3,10 @@
 #ifndef RT_FILM_H
 #define RT_FILM_H
 
+#include "film_types.h"
 #include "integrator/integrator.h"
 
-// Per pixel: sum of weight * radiance (xyz) and of weights (w); sum of squared radiance
-// (xyz) and the sample count (w), from which compare/ forms per-pixel variances.
-typedef struct PixelAccum {
-  float4 sum;
-  float4 sum_sq;
-  uint rays;       // Rays cast for this pixel, for the rays/s figures.
-  uint nonfinite;  // Samples whose radiance was NaN or infinite; they are left out.
-  uint pad1, pad2;
-} PixelAccum;
-
-RT_DEVICE float4 AddFloat4(float4 a, float3 v, float w) {
+RT_DEVICE float4 AddFloat4(float4 a, real3 v, real w) {
   a.x += v.x;
   a.y += v.y;
   a.z += v.z;
@@ -30,9 +21,9 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
   PixelAccum a = *acc;
   uint rays = 0u;
   for (int s = begin; s < end; ++s) {
-    float w;
+    real w;
     PrimaryInfo info;
-    float3 l = RenderSample(sd, x, y, (uint)s, &w, &info, &rays);
+    real3 l = RenderSample(sd, x, y, (uint)s, &w, &info, &rays);
     if (s == 0) *primary = info;
     if (!isfinite(l.x) || !isfinite(l.y) || !isfinite(l.z)) {
       // Counted, so --stats and the tests can fail on it, but kept off the film.

@@ -35,33 +35,33 @@ RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint st
   return k;
 }
 
-RT_DEVICE float Random1D(SampleKey k, uint dimension) {
+RT_DEVICE real Random1D(SampleKey k, uint dimension) {
   return UintToUnitFloat(HashCombine(k.prefix, dimension));
 }
 
-RT_DEVICE float2 Random2D(SampleKey k, uint dimension) {
-  return make_float2(Random1D(k, dimension), Random1D(k, dimension ^ 0x68bc21ebu));
+RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
+  return make_real2(Random1D(k, dimension), Random1D(k, dimension ^ 0x68bc21ebu));
 }
 
 // One point of a jittered n x n pattern per sample, in [0, 1)^2; random when the sample
 // count is not a perfect square.
-RT_DEVICE float2 Stratified2D(SampleKey k, uint dimension) {
-  float2 xi = Random2D(k, dimension);
+RT_DEVICE real2 Stratified2D(SampleKey k, uint dimension) {
+  real2 xi = Random2D(k, dimension);
   if (k.strata == 0u) return xi;
   uint key = Hash4(k.pixel, dimension, k.seed, 0x51ed2701u);
   uint stratum = PermutationElement(k.sample, k.samples, key);
-  float inv = 1.0f / (float)k.strata;
-  return make_float2(((float)(stratum % k.strata) + xi.x) * inv,
-                     ((float)(stratum / k.strata) + xi.y) * inv);
+  real inv = 1.0f / (real)k.strata;
+  return make_real2(((real)(stratum % k.strata) + xi.x) * inv,
+                    ((real)(stratum / k.strata) + xi.y) * inv);
 }
 
 // A jittered 1D pattern of `samples` strata (for the shutter time).
-RT_DEVICE float Stratified1D(SampleKey k, uint dimension) {
-  float xi = Random1D(k, dimension);
+RT_DEVICE real Stratified1D(SampleKey k, uint dimension) {
+  real xi = Random1D(k, dimension);
   if (k.samples <= 1u) return xi;
   uint key = Hash4(k.pixel, dimension, k.seed, 0x2c1b3c6du);
   uint stratum = PermutationElement(k.sample, k.samples, key);
-  return ((float)stratum + xi) / (float)k.samples;
+  return ((real)stratum + xi) / (real)k.samples;
 }
 
 // The random numbers of one ray of the ray tree: its pixel sample, its key in the tree
@@ -82,13 +82,13 @@ RT_DEVICE RaySampler MakeRaySampler(SampleKey sk, uint key, int primary) {
 }
 
 // The ray's 2D sample number `offset` (one per light, lobe...): stratified on camera rays.
-RT_DEVICE float2 RaySample2D(RaySampler rs, uint offset) {
+RT_DEVICE real2 RaySample2D(RaySampler rs, uint offset) {
   uint dim = HashCombine(rs.key, offset);
   return rs.primary ? Stratified2D(rs.sk, dim) : Random2D(rs.sk, dim);
 }
 
 // The ray's 1D sample number `offset`, never stratified.
-RT_DEVICE float RaySample1D(RaySampler rs, uint offset) {
+RT_DEVICE real RaySample1D(RaySampler rs, uint offset) {
   return Random1D(rs.sk, HashCombine(rs.key, offset));
 }
 

@@ -9,12 +9,12 @@
 // Per-ray constants of the watertight test (Woop, Benthin and Wald 2013): the ray is
 // sheared so it runs along +z, which makes the edge functions exact in sign.
 typedef struct TriangleRay {
-  float3 origin;
+  real3 origin;
   int kx, ky, kz;
-  float sx, sy, sz;
+  real sx, sy, sz;
 } TriangleRay;
 
-RT_DEVICE TriangleRay MakeTriangleRay(float3 origin, float3 dir) {
+RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
   TriangleRay tr;
   tr.origin = origin;
   tr.kz = MaxDimension(Abs3(dir));
@@ -26,7 +26,7 @@ RT_DEVICE TriangleRay MakeTriangleRay(float3 origin, float3 dir) {
     tr.kx = tr.ky;
     tr.ky = k;
   }
-  float dz = Component(dir, tr.kz);
+  real dz = Component(dir, tr.kz);
   tr.sx = Component(dir, tr.kx) / dz;
   tr.sy = Component(dir, tr.ky) / dz;
   tr.sz = 1.0f / dz;
@@ -37,26 +37,26 @@ RT_DEVICE TriangleRay MakeTriangleRay(float3 origin, float3 dir) {
 // Edge functions that are exactly zero count as inside for both triangles sharing the
 // edge, so a ray through a shared edge or vertex never slips through a closed mesh.
 // Back faces (det < 0: the ray sees the vertices clockwise) are skipped when cull is set.
-RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, float3 p0, float3 p1, float3 p2,
-                                float tmax, int cull, RT_PRIVATE float* t, RT_PRIVATE float* b1,
-                                RT_PRIVATE float* b2) {
-  float3 a = Permute3(p0 - tr->origin, tr->kx, tr->ky, tr->kz);
-  float3 b = Permute3(p1 - tr->origin, tr->kx, tr->ky, tr->kz);
-  float3 c = Permute3(p2 - tr->origin, tr->kx, tr->ky, tr->kz);
-  float ax = a.x - tr->sx * a.z, ay = a.y - tr->sy * a.z;
-  float bx = b.x - tr->sx * b.z, by = b.y - tr->sy * b.z;
-  float cx = c.x - tr->sx * c.z, cy = c.y - tr->sy * c.z;
-  float u = cx * by - cy * bx;
-  float v = ax * cy - ay * cx;
-  float w = bx * ay - by * ax;
+RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, real3 p0, real3 p1, real3 p2,
+                                real tmax, int cull, RT_PRIVATE real* t, RT_PRIVATE real* b1,
+                                RT_PRIVATE real* b2) {
+  real3 a = Permute3(p0 - tr->origin, tr->kx, tr->ky, tr->kz);
+  real3 b = Permute3(p1 - tr->origin, tr->kx, tr->ky, tr->kz);
+  real3 c = Permute3(p2 - tr->origin, tr->kx, tr->ky, tr->kz);
+  real ax = a.x - tr->sx * a.z, ay = a.y - tr->sy * a.z;
+  real bx = b.x - tr->sx * b.z, by = b.y - tr->sy * b.z;
+  real cx = c.x - tr->sx * c.z, cy = c.y - tr->sy * c.z;
+  real u = cx * by - cy * bx;
+  real v = ax * cy - ay * cx;
+  real w = bx * ay - by * ax;
   if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return 0;
-  float det = u + v + w;
+  real det = u + v + w;
   if (det == 0.0f || (cull && det < 0.0f)) return 0;
-  float az = tr->sz * a.z, bz = tr->sz * b.z, cz = tr->sz * c.z;
-  float tscaled = u * az + v * bz + w * cz;
+  real az = tr->sz * a.z, bz = tr->sz * b.z, cz = tr->sz * c.z;
+  real tscaled = u * az + v * bz + w * cz;
   if (det < 0.0f && (tscaled >= 0.0f || tscaled < tmax * det)) return 0;
   if (det > 0.0f && (tscaled <= 0.0f || tscaled > tmax * det)) return 0;
-  float inv_det = 1.0f / det;
+  real inv_det = 1.0f / det;
   *t = tscaled * inv_det;
   *b1 = v * inv_det;
   *b2 = w * inv_det;
@@ -66,18 +66,18 @@ RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, float3 p0, flo
 // Intersects the unit sphere at the origin. The discriminant is formed from the squared
 // distance between the centre and the ray's line (Haines et al., Ray Tracing Gems
 // ch. 7), which avoids the cancellation of b^2 - 4ac for distant or large spheres.
-RT_DEVICE int IntersectUnitSphere(float3 o, float3 d, float tmax, RT_PRIVATE float* t) {
-  float a = Dot(d, d);
-  float tc = -Dot(o, d) / a;
-  float3 l = o + d * tc;
-  float disc = (1.0f - Dot(l, l)) / a;
+RT_DEVICE int IntersectUnitSphere(real3 o, real3 d, real tmax, RT_PRIVATE real* t) {
+  real a = Dot(d, d);
+  real tc = -Dot(o, d) / a;
+  real3 l = o + d * tc;
+  real disc = (1.0f - Dot(l, l)) / a;
   if (disc < 0.0f) return 0;
-  float root = sqrt(disc);
+  real root = sqrt(disc);
   // The root farther from tc is exact; the other follows from the product of the roots.
-  float q = tc >= 0.0f ? tc + root : tc - root;
-  float c = (Dot(o, o) - 1.0f) / a;
-  float t0 = q, t1 = q != 0.0f ? c / q : 0.0f;
-  float tnear = fmin(t0, t1), tfar = fmax(t0, t1);
+  real q = tc >= 0.0f ? tc + root : tc - root;
+  real c = (Dot(o, o) - 1.0f) / a;
+  real t0 = q, t1 = q != 0.0f ? c / q : 0.0f;
+  real tnear = fmin(t0, t1), tfar = fmax(t0, t1);
   if (tnear > 0.0f && tnear < tmax) {
     *t = tnear;
     return 1;

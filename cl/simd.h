@@ -41,9 +41,4 @@ inline void LaneStoreI(LaneInt v, int* p) { std::memcpy(p, &v, sizeof v); }
 
 #endif
 
-// Per-lane minimum and maximum with the scalar MinF / MaxF rule (the second operand
-// when either is NaN), so a lane computes exactly what the scalar test would.
-RT_DEVICE LaneFloat LaneMin(LaneFloat a, LaneFloat b) { return a < b ? a : b; }
-RT_DEVICE LaneFloat LaneMax(LaneFloat a, LaneFloat b) { return a > b ? a : b; }
-
 #endif  // RT_SIMD_H

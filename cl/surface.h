@@ -11,12 +11,12 @@
 // The shading context of a hit (pbrt-v4's SurfaceInteraction): what lights, materials and
 // scattering read about the point. Texture coordinates and tangents belong here too.
 typedef struct SurfacePoint {
-  float3 p;     // World-space position.
-  float3 n;     // Unit shading normal (interpolated on smooth meshes).
-  float3 ng;    // Unit geometric normal.
-  float3 wo;    // Unit direction back along the incoming ray.
-  float scale;  // Largest coordinate magnitude p was computed from (see OffsetRayOrigin).
-  float time;   // The ray's shutter time; rays spawned here keep it.
+  real3 p;     // World-space position.
+  real3 n;     // Unit shading normal (interpolated on smooth meshes).
+  real3 ng;    // Unit geometric normal.
+  real3 wo;    // Unit direction back along the incoming ray.
+  real scale;  // Largest coordinate magnitude p was computed from (see OffsetRayOrigin).
+  real time;   // The ray's shutter time; rays spawned here keep it.
   int material;
   int front;  // 1 when wo is on the side ng points to.
   Hit hit;    // The hit it was built from: textures rebuild their frame from it.
@@ -31,11 +31,11 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
       RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
   SurfacePoint sp;
   sp.material = inst->material;
-  float3 p_obj, ng_obj, n_obj;
-  float mag = 1.0f;  // Object-space magnitude: the unit sphere, or the triangle's vertices.
+  real3 p_obj, ng_obj, n_obj;
+  real mag = 1.0f;  // Object-space magnitude: the unit sphere, or the triangle's vertices.
   if (hit.primitive < 0) {
-    float3 o = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
-    float3 d = ray.direction;
+    real3 o = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
+    real3 d = ray.direction;
     if (transformed) {
       o = TransformPoint(inst->world_to_object, o);
       d = TransformVector(inst->world_to_object, d);
@@ -45,22 +45,22 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     n_obj = p_obj;
   } else {
     RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
-    float b0 = 1.0f - hit.b1 - hit.b2;
-    p_obj = tri->v0 * b0 + tri->v1 * hit.b1 + tri->v2 * hit.b2;
-    mag = MaxF(MaxComponent(Abs3(tri->v0)),
-               MaxF(MaxComponent(Abs3(tri->v1)), MaxComponent(Abs3(tri->v2))));
-    ng_obj = Cross(tri->v1 - tri->v0, tri->v2 - tri->v0);
+    real b0 = 1.0f - hit.b1 - hit.b2;
+    real3 v0 = ToReal3(tri->v0), v1 = ToReal3(tri->v1), v2 = ToReal3(tri->v2);
+    p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
+    mag = MaxF(MaxComponent(Abs3(v0)), MaxF(MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))));
+    ng_obj = Cross(v1 - v0, v2 - v0);
     n_obj = ng_obj;
     if (RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0) {
       RT_GLOBAL const TriangleNormals* tn = &sd->normals[hit.primitive];
-      n_obj = tn->n0 * b0 + tn->n1 * hit.b1 + tn->n2 * hit.b2;
+      n_obj = ToReal3(tn->n0) * b0 + ToReal3(tn->n1) * hit.b1 + ToReal3(tn->n2) * hit.b2;
     }
   }
   sp.scale = mag;
   if (transformed) {
     // A bound on the world-space coordinates of points of magnitude `mag`.
     RT_GLOBAL const float4* o2w = inst->object_to_world;
-    float lin = 0.0f, shift = 0.0f;
+    real lin = 0.0f, shift = 0.0f;
     for (int r = 0; r < 3; ++r) {
       lin = MaxF(lin, fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z));
       shift = MaxF(shift, fabs(o2w[r].w));
@@ -75,8 +75,9 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     sp.n = Normalize(n_obj);
   }
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0) {
-    sp.p = sp.p + inst->motion * ray.time;
-    sp.scale = sp.scale + MaxComponent(Abs3(inst->motion)) * ray.time;
+    real3 motion = ToReal3(inst->motion);
+    sp.p = sp.p + motion * ray.time;
+    sp.scale = sp.scale + MaxComponent(Abs3(motion)) * ray.time;
   }
   sp.wo = Normalize(-ray.direction);
   sp.front = Dot(sp.wo, sp.ng) > 0.0f;
@@ -96,9 +97,9 @@ RT_DEVICE void FaceForward(RT_PRIVATE SurfacePoint* s) {
 
 // A ray leaving s along dir, from just above the surface (or below it, for refraction),
 // at the same shutter time.
-RT_DEVICE Ray SpawnRay(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s, float3 dir,
+RT_DEVICE Ray SpawnRay(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s, real3 dir,
                        int below) {
-  float3 origin =
+  real3 origin =
       OffsetRayOrigin(s->p, below ? -s->ng : s->ng, sd->header->shadow_epsilon, s->scale);
   return MakeRay(origin, dir, RT_INFINITY, s->time);
 }

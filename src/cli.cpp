@@ -53,6 +53,12 @@ OptionTable<RenderOptions> make_device_table() {
       .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)
+      .choice("--precision",
+              std::vector<std::pair<std::string, bool>>{{"float", false}, {"double", true}},
+              RT_FIELD(double_precision),
+              "arithmetic of the shared math on both devices: double is exact to far smaller "
+              "distances and costs time (README: precision); scene arrays stay float; an "
+              "OpenCL device without cl_khr_fp64 refuses double")
       .flag("--fast-math", RT_FIELD(fast_math),
             "OpenCL: build with -cl-fast-relaxed-math (faster, less exact; the CPU reference "
             "is always precise)");

@@ -140,6 +140,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
             (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0);
   f.fast_math = options.fast_math;
+  f.double_precision = options.double_precision;
   f.stats.bvh_build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return f;

@@ -33,6 +33,7 @@ struct RenderOptions {
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.
   bool camera_frame = true;
+  bool double_precision = false;  // Computation in double (cl/util/real.h); storage stays float.
   StopRule stop;
   BvhOptions bvh;
 };
@@ -63,6 +64,8 @@ struct FlatScene {
   std::vector<FlatMesh> meshes;  // Per SceneDesc::meshes.
   size_t blas_nodes = 0;         // nodes[0, blas_nodes) are the bottom levels.
   Vec3d world_origin;            // The world point at the devices' origin.
+  // Host-side only: which build of the shared math runs (both devices; cl/util/real.h).
+  bool double_precision = false;
 
   // Pointers into the arrays above, for the CPU reference.
   SceneData view() const;

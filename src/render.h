@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cl/film.h"
+#include "cl/film_types.h"
 
 namespace rt {
 

@@ -19,6 +19,8 @@ set -uo pipefail
 rt="$1" cmp="$2" scene="$3" work="$4" mode="$5"
 shift 5
 flags=("$@")
+# RT_TEST_PRECISION=double reruns the suite in double (README: precision).
+[ "${RT_TEST_PRECISION:-}" = double ] && flags+=(--precision double)
 
 source "$(dirname "$0")/scene_camera.sh"
 skip_unless_present "$scene"

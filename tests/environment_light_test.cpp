@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cl/light/light.h"
+#include "cl/material/brdf.h"
 #include "flat_scene.h"
 #include "render.h"
 #include "support/device_harness.h"

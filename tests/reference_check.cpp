@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "device/cpu_kernel.h"
 #include "flat_scene.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
@@ -126,6 +127,8 @@ rt::Image8 render_subset(const rt::FlatScene& flat, int block, int stride, rt::I
   out.rgb.assign(static_cast<size_t>(out.width) * out.height * 3, 0);
   *ref_out = out;
   SceneData sd = flat.view();
+  const rt::CpuPixelFunction accumulate =
+      flat.double_precision ? rt::accumulate_pixel_double : rt::accumulate_pixel_float;
   std::vector<std::thread> pool;
   int threads = std::max(1u, std::thread::hardware_concurrency());
   for (int t = 0; t < threads; ++t)
@@ -136,7 +139,7 @@ rt::Image8 render_subset(const rt::FlatScene& flat, int block, int stride, rt::I
           int x = (col / block) * stride * block + col % block;
           PixelAccum acc{};
           PrimaryInfo info;
-          AccumulatePixel(&sd, x, y, 0, cam.samples, &acc, &info);
+          accumulate(&sd, x, y, 0, cam.samples, &acc, &info);
           const float rgb[3] = {acc.sum.x / acc.sum.w, acc.sum.y / acc.sum.w,
                                 acc.sum.z / acc.sum.w};
           size_t o = (static_cast<size_t>(row) * out.width + col) * 3;
@@ -165,6 +168,9 @@ int main(int argc, char** argv) {
     }
   try {
     rt::SceneDesc scene = rt::load_scene(files[0]);
+    // RT_TEST_PRECISION=double reruns the reference tests in double (README: precision).
+    const char* precision = std::getenv("RT_TEST_PRECISION");
+    if (precision && std::strcmp(precision, "double") == 0) a.render.double_precision = true;
     rt::FlatScene flat = rt::flatten_scene(scene, a.render);
     rt::set_camera(flat, scene, a.camera, a.render);
     rt::Image8 ref = rt::read_png(files[1]);

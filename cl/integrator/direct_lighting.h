@@ -9,7 +9,7 @@
 #include "../surface.h"
 
 // 1 when nothing lies between origin and origin + segment (exclusive).
-RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, float3 origin, float3 segment, float time,
+RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, real3 origin, real3 segment, real time,
                          RT_PRIVATE uint* rays) {
   *rays += 1u;
   return !IntersectOccluded(sd, MakeRay(origin, segment, 1.0f, time));
@@ -17,11 +17,11 @@ RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, float3 origin, float3 s
 
 // The light sample's contribution towards s->wo: none from below the shading normal or
 // when the shadow segment is blocked.
-RT_DEVICE float3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
-                                  RT_PRIVATE const Material* m, LightSample ls,
-                                  RT_PRIVATE uint* rays) {
+RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
+                                 RT_PRIVATE const Material* m, LightSample ls,
+                                 RT_PRIVATE uint* rays) {
   if (!ls.valid || Dot(s->n, ls.wi) <= 0.0f) return Vec3(0.0f);
-  float3 origin = OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale);
+  real3 origin = OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale);
   if (!Unoccluded(sd, origin, ls.p_light - origin, s->time, rays)) return Vec3(0.0f);
   return EvaluateBsdf(sd, m, s->n, s->wo, ls.wi, ls.irradiance);
 }
@@ -29,9 +29,9 @@ RT_DEVICE float3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE con
 // l plus one sample of every light, summed in the lights' array order (point lights, then
 // area lights), which fixes the last bit of the result. `rs` draws the area lights'
 // samples. The path tracer's next-event estimation is this sum.
-RT_DEVICE float3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
-                                 RT_PRIVATE const Material* m, RaySampler rs, float3 l,
-                                 RT_PRIVATE uint* rays) {
+RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
+                                RT_PRIVATE const Material* m, RaySampler rs, real3 l,
+                                RT_PRIVATE uint* rays) {
   LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
   for (int i = 0; i < sd->header->num_lights; ++i)
     l += ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);
@@ -39,11 +39,10 @@ RT_DEVICE float3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
 }
 
 // The ray tree's shading: ambient plus the lights.
-RT_DEVICE float3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
-                                RT_PRIVATE const Material* m, RaySampler rs,
-                                RT_PRIVATE uint* rays) {
-  if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return m->diffuse;
-  return AddLightSamples(sd, s, m, rs, m->ambient * sd->header->ambient_light, rays);
+RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
+                               RT_PRIVATE const Material* m, RaySampler rs, RT_PRIVATE uint* rays) {
+  if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return ToReal3(m->diffuse);
+  return AddLightSamples(sd, s, m, rs, ToReal3(m->ambient * sd->header->ambient_light), rays);
 }
 
 #endif  // RT_INTEGRATOR_DIRECT_LIGHTING_H

@@ -16,8 +16,7 @@ RT_DEVICE int EscapedRaySees(RT_PRIVATE const SceneData* sd, int depth) {
 }
 
 // What such a ray sees: the environment light, else the background.
-RT_DEVICE float3 EscapedRadiance(RT_PRIVATE const SceneData* sd, float3 direction,
-                                 float2 pixel_uv) {
+RT_DEVICE real3 EscapedRadiance(RT_PRIVATE const SceneData* sd, real3 direction, real2 pixel_uv) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   if (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && h->environment >= 0)
     return EnvironmentRadiance(sd, &sd->lights[h->environment], direction);

@@ -6,6 +6,7 @@
 #define RT_INTEGRATOR_H
 
 #include "../camera.h"
+#include "../film_types.h"
 #include "../intersect.h"
 #include "../light/emission.h"
 #include "../material/material.h"
@@ -20,14 +21,14 @@
 // looked up); *rays counts every ray cast (camera, secondary, shadow).
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
 // evaluate the material, add direct light, scatter.
-RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, float2 pixel_uv,
-                    RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
+RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, real2 pixel_uv,
+                   RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
   RayStack stack;
   stack.size = 0;
   PushRay(&stack, MakeTask(camera_ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0));
-  float3 radiance = Vec3(0.0f);
+  real3 radiance = Vec3(0.0f);
   Hit none;
   none.t = RT_INFINITY;
   none.instance = -1;
@@ -65,21 +66,21 @@ RT_DEVICE float3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray
 
 // Camera sample `sample` of pixel (x, y): its radiance, and its reconstruction-filter
 // weight in *weight.
-RT_DEVICE float3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint sample,
-                              RT_PRIVATE float* weight, RT_PRIVATE PrimaryInfo* info,
-                              RT_PRIVATE uint* rays) {
+RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint sample,
+                             RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
+                             RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   RT_GLOBAL const Camera* cam = &h->camera;
   CameraSample cs = GenerateCameraSample(sd, x, y, sample);
   *weight = 1.0f;
   if (h->filter == RT_FILTER_GAUSSIAN) {
-    float dx = cs.film.x - 0.5f, dy = cs.film.y - 0.5f;
-    *weight = exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
+    real dx = cs.film.x - 0.5f, dy = cs.film.y - 0.5f;
+    *weight = ExpR(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
   // The background image is stretched over the film, pixel (x, y) at (x, y) / resolution:
   // with the bilinear lookup's convention (texture/image_texture.h) an image of the film's
   // size is reproduced texel for texel, as in the course's galactica images.
-  float2 pixel_uv = make_float2((float)x / (float)cam->width, (float)y / (float)cam->height);
+  real2 pixel_uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
 #if RT_COMPILED(RT_FEATURE_PATH_TRACING)
   if (RT_HAS(sd, RT_FEATURE_PATH_TRACING) && (h->flags & RT_FLAG_PATH_TRACING) != 0)
     return PathLi(sd, cs.key, cs.ray, pixel_uv, info, rays);

@@ -56,20 +56,20 @@
 // One path of the tree, from the vertex its ray will hit.
 typedef struct PathState {
   Ray ray;
-  float3 weight;    // What the path finds is multiplied by this (f cos / pdf products).
-  float3 roulette;  // The course's roulette throughput: the product of BRDF values.
-  float3 medium;    // Absorption of the dielectric the path travels in.
-  uint key;         // Keys the random dimensions of the vertex.
-  int bounce;       // Scatterings so far.
-  int inside;       // 1 while inside a dielectric.
-  int specular;     // The last scattering was a delta lobe (the camera ray counts as one).
+  real3 weight;    // What the path finds is multiplied by this (f cos / pdf products).
+  real3 roulette;  // The course's roulette throughput: the product of BRDF values.
+  real3 medium;    // Absorption of the dielectric the path travels in.
+  uint key;        // Keys the random dimensions of the vertex.
+  int bounce;      // Scatterings so far.
+  int inside;      // 1 while inside a dielectric.
+  int specular;    // The last scattering was a delta lobe (the camera ray counts as one).
 } PathState;
 
 // Radiance the surface at s emits back along s->wo: object lights (LightMesh,
 // LightSphere, cl/light/emission.h) on their emitting side. The point, spot, directional
 // and area lights of this renderer are not part of the geometry, so a path finds them
 // only by light sampling. s must not be face-forwarded yet.
-RT_DEVICE float3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s) {
+RT_DEVICE real3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s) {
   if (RT_HAS(sd, RT_FEATURE_OBJECT_LIGHTS)) return EmittedRadiance(sd, s);
   return Vec3(0.0f);
 }
@@ -88,8 +88,8 @@ RT_DEVICE float3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
 // --russian-roulette unbiased plays pbrt-v4's: after the hit's light is added, with the
 // path's weight as throughput, so the expectation is unchanged and paths of low weight end
 // early.
-RT_DEVICE int RouletteSurvives(RT_PRIVATE PathState* p, float3 throughput, RaySampler rs) {
-  float q = fmin(1.0f, MaxComponent(throughput));
+RT_DEVICE int RouletteSurvives(RT_PRIVATE PathState* p, real3 throughput, RaySampler rs) {
+  real q = fmin(RT_R(1.0), MaxComponent(throughput));
   if (q >= 1.0f) return 1;
   if (!(q > 0.0f) || RaySample1D(rs, RT_DIM_RUSSIAN_ROULETTE) >= q) return 0;
   p->weight = p->weight * (1.0f / q);
@@ -109,13 +109,13 @@ RT_DEVICE PathState BranchPath(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
   c.specular = bs.specular;
   if (bs.transmit) {
     c.inside = s->front;
-    c.medium = s->front ? m->absorption : Vec3(0.0f);
+    c.medium = s->front ? ToReal3(m->absorption) : Vec3(0.0f);
   }
   return c;
 }
 
-RT_DEVICE float3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
-                        float2 pixel_uv, RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
+RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, real2 pixel_uv,
+                       RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int flags = h->flags;
   int nee = (flags & RT_FLAG_NEXT_EVENT) != 0;
@@ -123,7 +123,7 @@ RT_DEVICE float3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera
   int roulette = (flags & RT_FLAG_RUSSIAN_ROULETTE) != 0;
   int course_roulette = roulette && (flags & RT_FLAG_UNBIASED_ROULETTE) == 0;
   int max_bounces = roulette ? RT_MAX_PATH_BOUNCES : h->max_depth;
-  float3 radiance = Vec3(0.0f);
+  real3 radiance = Vec3(0.0f);
   PathState stack[RT_PATH_STACK];
   int pending = 0;
   PathState p;
@@ -153,9 +153,9 @@ RT_DEVICE float3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera
         p.weight = p.weight * BeerLambertPortable(p.medium, hit.t * Length(p.ray.direction));
       Material m = EvaluateMaterial(sd, &s);
       // The light this hit adds: emission, then light samples.
-      float3 found = (!nee || p.specular) ? SurfaceEmission(sd, &s) : Vec3(0.0f);
+      real3 found = (!nee || p.specular) ? SurfaceEmission(sd, &s) : Vec3(0.0f);
       if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m.unlit) {
-        found = found + m.diffuse;  // A replace_all texture shows its colour, unshaded.
+        found = found + ToReal3(m.diffuse);  // A replace_all texture shows its colour, unshaded.
         alive = 0;
       }
       // Unlike the ray tree's direct lighting, the path sees every surface from the side it

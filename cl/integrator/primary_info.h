@@ -1,22 +1,17 @@
 // Deterministic facts about a pixel's first camera ray, for exact comparisons; every
-// integrator records them.
+// integrator records them (the struct is in ../film_types.h, in float whatever the
+// precision of the computation).
 #ifndef RT_INTEGRATOR_PRIMARY_INFO_H
 #define RT_INTEGRATOR_PRIMARY_INFO_H
 
+#include "../film_types.h"
 #include "../ray.h"
 
-typedef struct PrimaryInfo {
-  float t;
-  int instance;
-  int primitive;
-  float3 normal;
-} PrimaryInfo;
-
-RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, float3 normal) {
-  info->t = hit.t;
+RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, real3 normal) {
+  info->t = hit.t;  // Rounds to the float of the output in double.
   info->instance = hit.instance;
   info->primitive = hit.primitive;
-  info->normal = normal;
+  info->normal = ToFloat3(normal);
 }
 
-#endif  // RT_INTEGRATOR_PRIMARY_INFO_H
+#endif

@@ -25,9 +25,9 @@
 
 typedef struct RayTask {
   Ray ray;
-  float3 weight;
-  float3 medium;  // Absorption coefficient of the medium the ray travels in (0: air).
-  uint key;       // Identifies the ray in the tree; keys its random dimensions.
+  real3 weight;
+  real3 medium;  // Absorption coefficient of the medium the ray travels in (0: air).
+  uint key;      // Identifies the ray in the tree; keys its random dimensions.
   int depth;
   int inside;  // 1 while the ray travels inside a dielectric.
 } RayTask;
@@ -37,7 +37,7 @@ typedef struct RayStack {
   int size;
 } RayStack;
 
-RT_DEVICE RayTask MakeTask(Ray ray, float3 weight, float3 medium, uint key, int depth, int inside) {
+RT_DEVICE RayTask MakeTask(Ray ray, real3 weight, real3 medium, uint key, int depth, int inside) {
   RayTask task;
   task.ray = ray;
   task.weight = weight;
@@ -49,7 +49,7 @@ RT_DEVICE RayTask MakeTask(Ray ray, float3 weight, float3 medium, uint key, int 
 }
 
 // Child `child` (RT_CHILD_*) of `parent`, one level deeper.
-RT_DEVICE RayTask ChildTask(RT_PRIVATE const RayTask* parent, Ray ray, float3 weight, float3 medium,
+RT_DEVICE RayTask ChildTask(RT_PRIVATE const RayTask* parent, Ray ray, real3 weight, real3 medium,
                             uint child, int inside) {
   return MakeTask(ray, weight, medium, HashCombine(parent->key, child), parent->depth + 1, inside);
 }

@@ -18,17 +18,17 @@ RT_DEVICE int HitLightIndex(RT_PRIVATE const SceneData* sd, Hit hit) {
 
 // Radiance leaving s along s->wo: the light's radiance on its emitting side (the front of
 // a mesh's faces, the outside of a sphere), else none. s must not be face-forwarded yet.
-RT_DEVICE float3 EmittedRadiance(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s) {
+RT_DEVICE real3 EmittedRadiance(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s) {
   int l = HitLightIndex(sd, s->hit);
   if (l < 0 || !s->front) return Vec3(0.0f);
-  return sd->lights[l].emission;
+  return ToReal3(sd->lights[l].emission);
 }
 
 // The solid-angle density with which SampleLight, from the point p, picks the point s of
 // the object light s lies on; 0 for a point it never picks (another object, a face turned
 // away from p). s must not be face-forwarded yet.
-RT_DEVICE float EmitterPdf(RT_PRIVATE const SceneData* sd, float3 p,
-                           RT_PRIVATE const SurfacePoint* s) {
+RT_DEVICE real EmitterPdf(RT_PRIVATE const SceneData* sd, real3 p,
+                          RT_PRIVATE const SurfacePoint* s) {
   int l = HitLightIndex(sd, s->hit);
   if (l < 0) return 0.0f;
   RT_GLOBAL const Light* light = &sd->lights[l];

@@ -15,36 +15,36 @@
 #include "environment_map.h"
 #include "light_sample.h"
 
-RT_DEVICE float3 EnvTexel(RT_PRIVATE const SceneData* sd, int index) {
+RT_DEVICE real3 EnvTexel(RT_PRIVATE const SceneData* sd, int index) {
   float4 t = sd->env_texels[index];
-  return make_float3(t.x, t.y, t.z);
+  return make_real3(t.x, t.y, t.z);
 }
 
 // The radiance arriving along -dir, for a ray travelling along dir (any length).
-RT_DEVICE float3 EnvironmentRadiance(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
-                                     float3 dir) {
-  float2 uv = EnvDirectionToUV(light->index, Normalize(dir));
+RT_DEVICE real3 EnvironmentRadiance(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
+                                    real3 dir) {
+  real2 uv = EnvDirectionToUV(light->index, Normalize(dir));
   return EnvTexel(sd, EnvTexelIndex(uv, (int)light->param1, (int)light->param2));
 }
 
 // The density, over the map, of the texel importance sampling draws.
-RT_DEVICE float EnvTexelDensity(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light, int x,
-                                int y) {
+RT_DEVICE real EnvTexelDensity(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light, int x,
+                               int y) {
   int w = (int)light->param1, h = (int)light->param2;
   RT_GLOBAL const float* marginal = sd->env_marginal_cdf;
   RT_GLOBAL const float* row = sd->env_conditional_cdf + y * (w + 1);
-  return (marginal[y + 1] - marginal[y]) * (float)h * ((row[x + 1] - row[x]) * (float)w);
+  return (marginal[y + 1] - marginal[y]) * (real)h * ((row[x + 1] - row[x]) * (real)w);
 }
 
 // The solid-angle density with which importance sampling draws unit direction d (0 where
 // the map is black), for tests and for combining with other strategies.
-RT_DEVICE float EnvironmentPdf(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
-                               float3 d) {
+RT_DEVICE real EnvironmentPdf(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
+                              real3 d) {
   if (light->area <= 0.0f) return 0.0f;
   int w = (int)light->param1, h = (int)light->param2;
-  float2 uv = EnvDirectionToUV(light->index, d);
+  real2 uv = EnvDirectionToUV(light->index, d);
   int texel = EnvTexelIndex(uv, w, h);
-  float jacobian;
+  real jacobian;
   EnvUVToDirection(light->index, uv, &jacobian);
   if (!(jacobian > 0.0f)) return 0.0f;
   return EnvTexelDensity(sd, light, texel % w, texel / w) / jacobian;
@@ -52,12 +52,12 @@ RT_DEVICE float EnvironmentPdf(RT_PRIVATE const SceneData* sd, RT_GLOBAL const L
 
 // A direction in the hemisphere around unit n from u in [0, 1)^2: uniform (density
 // 1 / (2 pi)) or cosine-weighted (cos / pi), returning that density in *pdf.
-RT_DEVICE float3 SampleHemisphere(float3 n, float2 u, int cosine, RT_PRIVATE float* pdf) {
-  float z = cosine ? sqrt(1.0f - u.x) : u.x;
-  float r = sqrt(MaxF(0.0f, 1.0f - z * z));
-  float s, c;
+RT_DEVICE real3 SampleHemisphere(real3 n, real2 u, int cosine, RT_PRIVATE real* pdf) {
+  real z = cosine ? sqrt(1.0f - u.x) : u.x;
+  real r = sqrt(MaxF(0.0f, 1.0f - z * z));
+  real s, c;
   SinCos2Pi(u.y, &s, &c);
-  float3 t, b;
+  real3 t, b;
   CoordinateSystem(n, &t, &b);
   *pdf = cosine ? z * (1.0f / RT_PI) : 0.5f / RT_PI;
   return t * (r * c) + b * (r * s) + n * z;
@@ -65,22 +65,22 @@ RT_DEVICE float3 SampleHemisphere(float3 n, float2 u, int cosine, RT_PRIVATE flo
 
 RT_DEVICE LightSample SampleEnvironmentLight(RT_PRIVATE const SceneData* sd,
                                              RT_GLOBAL const Light* light,
-                                             RT_PRIVATE const LightSampleContext* ctx, float2 u) {
+                                             RT_PRIVATE const LightSampleContext* ctx, real2 u) {
   LightSample ls;
   ls.valid = 0;
   ls.irradiance = Vec3(0.0f);
   ls.wi = ctx->n;
   ls.p_light = ctx->p;
-  float pdf = 0.0f;
-  float3 radiance = Vec3(0.0f);
+  real pdf = 0.0f;
+  real3 radiance = Vec3(0.0f);
   if (light->variant == RT_ENV_SAMPLE_IMPORTANCE) {
     if (light->area <= 0.0f) return ls;  // A black map sends nothing.
     int w = (int)light->param1, h = (int)light->param2;
-    float dv, du;
+    real dv, du;
     int y = SampleCdf(sd->env_marginal_cdf, h, u.y, &dv);
     int x = SampleCdf(sd->env_conditional_cdf + y * (w + 1), w, u.x, &du);
-    float jacobian;
-    float2 uv = make_float2(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
+    real jacobian;
+    real2 uv = make_real2(((real)x + du) / (real)w, ((real)y + dv) / (real)h);
     ls.wi = EnvUVToDirection(light->index, uv, &jacobian);
     if (!(jacobian > 0.0f)) return ls;
     pdf = EnvTexelDensity(sd, light, x, y) / jacobian;

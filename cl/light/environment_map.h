@@ -27,49 +27,49 @@
 #define RT_ENV_SAMPLE_COSINE 2  // By cos(theta) / pi over the hemisphere.
 
 // The map coordinates of unit direction d.
-RT_DEVICE float2 EnvDirectionToUV(int mapping, float3 d) {
+RT_DEVICE real2 EnvDirectionToUV(int mapping, real3 d) {
   if (mapping == RT_ENV_PROBE) {
-    float len = sqrt(d.x * d.x + d.y * d.y);
+    real len = sqrt(d.x * d.x + d.y * d.y);
     // Straight ahead is the centre; straight behind is anywhere on the rim (its right end).
-    if (len == 0.0f) return make_float2(d.z <= 0.0f ? 0.5f : 1.0f, 0.5f);
-    float r = AcosF(-d.z) / (RT_PI * len);
-    return make_float2(0.5f * (1.0f + r * d.x), 0.5f * (1.0f - r * d.y));
+    if (len == 0.0f) return make_real2(d.z <= 0.0f ? 0.5f : 1.0f, 0.5f);
+    real r = AcosF(-d.z) / (RT_PI * len);
+    return make_real2(0.5f * (1.0f + r * d.x), 0.5f * (1.0f - r * d.y));
   }
-  return make_float2(0.5f * (1.0f + Atan2F(d.x, -d.z) / RT_PI), AcosF(d.y) / RT_PI);
+  return make_real2(0.5f * (1.0f + Atan2F(d.x, -d.z) / RT_PI), AcosF(d.y) / RT_PI);
 }
 
 // The unit direction at map coordinates uv, and in *jacobian the solid angle per unit of
 // map area there (dw / (du dv)), which turns a density over the map into one over
 // directions. Points of a probe image outside its disc have no direction: jacobian 0.
-RT_DEVICE float3 EnvUVToDirection(int mapping, float2 uv, RT_PRIVATE float* jacobian) {
-  float s, c;
+RT_DEVICE real3 EnvUVToDirection(int mapping, real2 uv, RT_PRIVATE real* jacobian) {
+  real s, c;
   if (mapping == RT_ENV_PROBE) {
-    float a = 2.0f * uv.x - 1.0f, b = 1.0f - 2.0f * uv.y;
-    float r = sqrt(a * a + b * b);
+    real a = 2.0f * uv.x - 1.0f, b = 1.0f - 2.0f * uv.y;
+    real r = sqrt(a * a + b * b);
     if (r > 1.0f) {
       *jacobian = 0.0f;
-      return make_float3(0.0f, 0.0f, -1.0f);
+      return make_real3(0.0f, 0.0f, -1.0f);
     }
     if (r == 0.0f) {
       *jacobian = 4.0f * RT_PI * RT_PI;  // The limit of 4 pi sin(pi r) / r.
-      return make_float3(0.0f, 0.0f, -1.0f);
+      return make_real3(0.0f, 0.0f, -1.0f);
     }
     SinCos2Pi(0.5f * r, &s, &c);  // The angle from -z is pi r.
     // The disc has area 1/4 in uv: du dv = dA / 4 and dw = pi sin(pi r) / r dA.
     *jacobian = 4.0f * RT_PI * s / r;
-    return make_float3(s * a / r, s * b / r, -c);
+    return make_real3(s * a / r, s * b / r, -c);
   }
-  float sp, cp;
+  real sp, cp;
   SinCos2Pi(uv.x - 0.5f, &sp, &cp);  // phi = 2 pi (u - 1/2) = atan2(x, -z).
   SinCos2Pi(0.5f * uv.y, &s, &c);    // theta = pi v = acos(y).
   *jacobian = 2.0f * RT_PI * RT_PI * s;
-  return make_float3(s * sp, c, -s * cp);
+  return make_real3(s * sp, c, -s * cp);
 }
 
 // The texel (column, row) holding uv: the one whose square contains (u W, v H), clamped
 // to the image (nearest lookup: the radiance is constant over a texel, as the density is).
-RT_DEVICE int EnvTexelIndex(float2 uv, int width, int height) {
-  int x = (int)floor(uv.x * (float)width), y = (int)floor(uv.y * (float)height);
+RT_DEVICE int EnvTexelIndex(real2 uv, int width, int height) {
+  int x = (int)floor(uv.x * (real)width), y = (int)floor(uv.y * (real)height);
   x = x < 0 ? 0 : (x >= width ? width - 1 : x);
   y = y < 0 ? 0 : (y >= height ? height - 1 : y);
   return y * width + x;
@@ -79,7 +79,7 @@ RT_DEVICE int EnvTexelIndex(float2 uv, int width, int height) {
 // with cdf[i] <= u < cdf[i + 1] (steps of zero width are never chosen), and in *offset
 // where u falls inside it, in [0, 1). A binary search, as pbrt-v4's
 // PiecewiseConstant1D::Sample.
-RT_DEVICE int SampleCdf(RT_GLOBAL const float* cdf, int n, float u, RT_PRIVATE float* offset) {
+RT_DEVICE int SampleCdf(RT_GLOBAL const float* cdf, int n, real u, RT_PRIVATE real* offset) {
   int lo = 0, hi = n;
   while (hi - lo > 1) {
     int mid = (lo + hi) / 2;
@@ -88,7 +88,7 @@ RT_DEVICE int SampleCdf(RT_GLOBAL const float* cdf, int n, float u, RT_PRIVATE f
     else
       hi = mid;
   }
-  float o = (u - cdf[lo]) / (cdf[lo + 1] - cdf[lo]);
+  real o = (u - cdf[lo]) / (cdf[lo + 1] - cdf[lo]);
   *offset = o < 0.99999994f ? o : 0.99999994f;  // The largest float below 1.
   return lo;
 }

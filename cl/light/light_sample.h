@@ -8,12 +8,12 @@
 
 // The point being lit, as a light's sampling sees it.
 typedef struct LightSampleContext {
-  float3 p;   // World-space position.
-  float3 n;   // Unit shading normal.
-  float3 ng;  // Unit geometric normal.
+  real3 p;   // World-space position.
+  real3 n;   // Unit shading normal.
+  real3 ng;  // Unit geometric normal.
 } LightSampleContext;
 
-RT_DEVICE LightSampleContext MakeLightSampleContext(float3 p, float3 n, float3 ng) {
+RT_DEVICE LightSampleContext MakeLightSampleContext(real3 p, real3 n, real3 ng) {
   LightSampleContext ctx;
   ctx.p = p;
   ctx.n = n;
@@ -23,23 +23,23 @@ RT_DEVICE LightSampleContext MakeLightSampleContext(float3 p, float3 n, float3 n
 
 // One sample of a light as seen from a shading point.
 typedef struct LightSample {
-  float3 p_light;  // The sampled point of the light: the shadow segment ends there.
-  float3 wi;       // Unit direction from the shading point towards p_light.
+  real3 p_light;  // The sampled point of the light: the shadow segment ends there.
+  real3 wi;       // Unit direction from the shading point towards p_light.
   // Irradiance the sample delivers to a surface facing wi (before the receiver's cosine,
   // which is the reflection model's), already divided by the sample's density.
-  float3 irradiance;
+  real3 irradiance;
   // Density of wi per unit solid angle, for a path tracer's weighting; 0 for the lights
   // that sample a single direction (point, spot, directional), which a ray never finds.
-  float pdf;
+  real pdf;
   int valid;  // 0 when the light sends nothing (the shading point lies on the light).
 } LightSample;
 
 // The sample of a light that radiates `power` (intensity, or radiance times the area
 // that is sampled) from q towards p, falling off as 1 / d^2.
-RT_DEVICE LightSample LightSampleTowards(float3 p, float3 q, float3 power) {
+RT_DEVICE LightSample LightSampleTowards(real3 p, real3 q, real3 power) {
   LightSample ls;
-  float3 to_light = q - p;
-  float dist2 = Dot(to_light, to_light);
+  real3 to_light = q - p;
+  real dist2 = Dot(to_light, to_light);
   ls.p_light = q;
   ls.valid = !(dist2 <= 0.0f);
   ls.wi = Vec3(0.0f);

@@ -15,7 +15,7 @@
 // The triangle whose cumulative-area interval holds *u, which is rescaled to [0, 1)
 // within that interval so it can place the point inside the triangle.
 RT_DEVICE int PickMeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
-                                    RT_PRIVATE float* u) {
+                                    RT_PRIVATE real* u) {
   RT_GLOBAL const float* cdf = sd->light_cdf + light->cdf;
   int lo = 0, hi = light->count - 1;
   while (lo < hi) {
@@ -25,8 +25,8 @@ RT_DEVICE int PickMeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL co
     else
       hi = mid;
   }
-  float below = lo > 0 ? cdf[lo - 1] : 0.0f;
-  float width = cdf[lo] - below;
+  real below = lo > 0 ? cdf[lo - 1] : 0.0f;
+  real width = cdf[lo] - below;
   *u = width > 0.0f ? MinF((*u - below) / width, 0.99999994f) : 0.5f;
   return lo;
 }
@@ -35,13 +35,13 @@ RT_DEVICE int PickMeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL co
 // object-space face normal through the inverse transpose, as ComputeSurface turns it, so
 // the side a ray sees as front is the side that emits.
 RT_DEVICE void MeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
-                                 int k, RT_PRIVATE float3* v, RT_PRIVATE float3* n) {
+                                 int k, RT_PRIVATE real3* v, RT_PRIVATE real3* n) {
   RT_GLOBAL const Instance* inst = &sd->instances[light->index];
   RT_GLOBAL const Triangle* tri = &sd->triangles[light->first + k];
-  float3 ng = Cross(tri->v1 - tri->v0, tri->v2 - tri->v0);
-  v[0] = tri->v0;
-  v[1] = tri->v1;
-  v[2] = tri->v2;
+  v[0] = ToReal3(tri->v0);
+  v[1] = ToReal3(tri->v1);
+  v[2] = ToReal3(tri->v2);
+  real3 ng = Cross(v[1] - v[0], v[2] - v[0]);
   if (RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0) {
     for (int i = 0; i < 3; ++i) v[i] = TransformPoint(inst->object_to_world, v[i]);
     ng = TransformNormalByInverse(inst->world_to_object, ng);
@@ -51,26 +51,26 @@ RT_DEVICE void MeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL const
 
 // Density per unit solid angle, seen from p, of the light's point q with unit normal n:
 // d^2 / (A cos), or 0 when q's face turns away from p (it sends nothing there).
-RT_DEVICE float MeshLightPdf(RT_GLOBAL const Light* light, float3 p, float3 q, float3 n) {
-  float3 to_p = p - q;
-  float dist2 = Dot(to_p, to_p);
-  float cos_light = Dot(n, to_p) / sqrt(dist2);
+RT_DEVICE real MeshLightPdf(RT_GLOBAL const Light* light, real3 p, real3 q, real3 n) {
+  real3 to_p = p - q;
+  real dist2 = Dot(to_p, to_p);
+  real cos_light = Dot(n, to_p) / sqrt(dist2);
   if (!(cos_light > 0.0f)) return 0.0f;
   return dist2 / (light->area * cos_light);
 }
 
 RT_DEVICE LightSample SampleMeshLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
-                                      RT_PRIVATE const LightSampleContext* ctx, float2 u) {
-  float ux = u.x;  // OpenCL C cannot take the address of a vector's component.
+                                      RT_PRIVATE const LightSampleContext* ctx, real2 u) {
+  real ux = u.x;  // OpenCL C cannot take the address of a vector's component.
   int k = PickMeshLightTriangle(sd, light, &ux);
-  float3 v[3], n;
+  real3 v[3], n;
   MeshLightTriangle(sd, light, k, v, &n);
   // Uniform barycentrics (the square-root warp), continuous in u.
-  float su = sqrt(ux);
-  float b1 = (1.0f - u.y) * su, b2 = u.y * su;
-  float3 q = v[0] * (1.0f - su) + v[1] * b1 + v[2] * b2;
-  LightSample ls = LightSampleTowards(ctx->p, q, light->emission * light->area);
-  float cos_light = -Dot(n, ls.wi);
+  real su = sqrt(ux);
+  real b1 = (1.0f - u.y) * su, b2 = u.y * su;
+  real3 q = v[0] * (1.0f - su) + v[1] * b1 + v[2] * b2;
+  LightSample ls = LightSampleTowards(ctx->p, q, ToReal3(light->emission) * light->area);
+  real cos_light = -Dot(n, ls.wi);
   if (!ls.valid || !(cos_light > 0.0f)) {
     ls.valid = 0;
     return ls;
@@ -79,7 +79,7 @@ RT_DEVICE LightSample SampleMeshLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL 
   ls.pdf = MeshLightPdf(light, ctx->p, q, n);
   // The shadow segment stops just off the light, on the side that faces p, so the
   // light's own triangle cannot block it.
-  float scale =
+  real scale =
       fmax(MaxComponent(Abs3(v[0])), fmax(MaxComponent(Abs3(v[1])), MaxComponent(Abs3(v[2]))));
   ls.p_light = OffsetRayOrigin(q, n, sd->header->shadow_epsilon, scale);
   return ls;

@@ -6,7 +6,7 @@
 
 RT_DEVICE LightSample SamplePointLight(RT_GLOBAL const Light* light,
                                        RT_PRIVATE const LightSampleContext* ctx) {
-  return LightSampleTowards(ctx->p, light->position, light->emission);
+  return LightSampleTowards(ctx->p, ToReal3(light->position), ToReal3(light->emission));
 }
 
 #endif  // RT_LIGHT_POINT_H

@@ -12,18 +12,19 @@
 
 #include "light_sample.h"
 
-RT_DEVICE float SpotFalloff(RT_GLOBAL const Light* light, float cos_a) {
+RT_DEVICE real SpotFalloff(RT_GLOBAL const Light* light, real cos_a) {
   if (cos_a >= light->param0) return 1.0f;
   if (cos_a <= light->param1) return 0.0f;
-  float t = (cos_a - light->param1) / (light->param0 - light->param1);
-  float t2 = t * t;
+  real t = (cos_a - light->param1) / (light->param0 - light->param1);
+  real t2 = t * t;
   return t2 * t2;
 }
 
 RT_DEVICE LightSample SampleSpotLight(RT_GLOBAL const Light* light,
                                       RT_PRIVATE const LightSampleContext* ctx) {
-  LightSample ls = LightSampleTowards(ctx->p, light->position, light->emission);
-  if (ls.valid) ls.irradiance = ls.irradiance * SpotFalloff(light, -Dot(ls.wi, light->normal));
+  LightSample ls = LightSampleTowards(ctx->p, ToReal3(light->position), ToReal3(light->emission));
+  if (ls.valid)
+    ls.irradiance = ls.irradiance * SpotFalloff(light, -Dot(ls.wi, ToReal3(light->normal)));
   return ls;
 }
 

@@ -8,14 +8,13 @@
 // Diffuse plus Blinn-Phong specular for irradiance `e` arriving from unit direction wi
 // at a point with unit normal n, seen from unit direction wo. `m` is the material as
 // evaluated at the point (EvaluateMaterial).
-RT_DEVICE float3 BlinnPhong(RT_PRIVATE const Material* m, float3 n, float3 wo, float3 wi,
-                            float3 e) {
-  float cos_i = Dot(n, wi);
+RT_DEVICE real3 BlinnPhong(RT_PRIVATE const Material* m, real3 n, real3 wo, real3 wi, real3 e) {
+  real cos_i = Dot(n, wi);
   if (cos_i <= 0.0f) return Vec3(0.0f);
-  float3 h = Normalize(wi + wo);
-  float cos_h = fmax(0.0f, Dot(n, h));
-  float spec = cos_h > 0.0f ? PowF(cos_h, m->phong_exponent) : 0.0f;
-  return (m->diffuse * cos_i + m->specular * spec) * e;
+  real3 h = Normalize(wi + wo);
+  real cos_h = fmax(RT_R(0.0), Dot(n, h));
+  real spec = cos_h > 0.0f ? PowF(cos_h, m->phong_exponent) : 0.0f;
+  return (ToReal3(m->diffuse) * cos_i + ToReal3(m->specular) * spec) * e;
 }
 
 #endif  // RT_MATERIAL_BLINN_PHONG_H

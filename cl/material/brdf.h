@@ -37,11 +37,11 @@
 #define RT_BRDF_KD_FRESNEL 2  // Torrance-Sparrow: diffuse weighted by 1 - F.
 
 typedef struct BrdfParams {
-  float3 kd, ks;
-  float exponent;
+  real3 kd, ks;
+  real exponent;
   int model;
   int flags;
-  float eta, kappa;  // Complex refraction index of the surface (Torrance-Sparrow's F).
+  real eta, kappa;  // Complex refraction index of the surface (Torrance-Sparrow's F).
 } BrdfParams;
 
 RT_DEVICE int BrdfIsPhongLobe(int model) {
@@ -49,84 +49,84 @@ RT_DEVICE int BrdfIsPhongLobe(int model) {
 }
 
 // f cos(t_i) for one pair of directions; zero when either lies below the surface.
-RT_DEVICE float3 BrdfFCos(RT_PRIVATE const BrdfParams* b, float3 n, float3 wo, float3 wi) {
-  float cos_i = Dot(n, wi);
-  float cos_o = Dot(n, wo);
+RT_DEVICE real3 BrdfFCos(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real3 wi) {
+  real cos_i = Dot(n, wi);
+  real cos_o = Dot(n, wo);
   if (cos_i <= 0.0f || cos_o <= 0.0f) return Vec3(0.0f);
-  float p = b->exponent;
+  real p = b->exponent;
   int normalized = (b->flags & RT_BRDF_NORMALIZED) != 0;
   if (b->model == RT_BRDF_TORRANCE_SPARROW) {
-    float3 h = Normalize(wi + wo);
-    float cos_h = fmax(0.0f, Dot(n, h));
-    float o_h = Dot(wo, h);
-    float d = (p + 2.0f) * (1.0f / (2.0f * RT_PI)) * PowF(cos_h, p);
-    float g = fmin(1.0f, fmin(2.0f * cos_h * cos_o / o_h, 2.0f * cos_h * cos_i / o_h));
-    float f = FrConductor(cos_i, b->eta, b->kappa);
-    float kd_scale = (b->flags & RT_BRDF_KD_FRESNEL) != 0 ? (1.0f - f) : 1.0f;
-    float spec = d * f * g / (4.0f * cos_o);  // The cos(t_i) of the denominator cancels.
+    real3 h = Normalize(wi + wo);
+    real cos_h = fmax(RT_R(0.0), Dot(n, h));
+    real o_h = Dot(wo, h);
+    real d = (p + 2.0f) * (1.0f / (2.0f * RT_PI)) * PowF(cos_h, p);
+    real g = fmin(RT_R(1.0), fmin(2.0f * cos_h * cos_o / o_h, 2.0f * cos_h * cos_i / o_h));
+    real f = FrConductor(cos_i, b->eta, b->kappa);
+    real kd_scale = (b->flags & RT_BRDF_KD_FRESNEL) != 0 ? (1.0f - f) : 1.0f;
+    real spec = d * f * g / (4.0f * cos_o);  // The cos(t_i) of the denominator cancels.
     return b->kd * (kd_scale * (1.0f / RT_PI) * cos_i) + b->ks * spec;
   }
-  float cos_a;
+  real cos_a;
   if (BrdfIsPhongLobe(b->model)) {
-    cos_a = fmax(0.0f, Dot(Reflect(wi, n), wo));
+    cos_a = fmax(RT_R(0.0), Dot(Reflect(wi, n), wo));
   } else {
-    float3 h = Normalize(wi + wo);
-    cos_a = fmax(0.0f, Dot(n, h));
+    real3 h = Normalize(wi + wo);
+    cos_a = fmax(RT_R(0.0), Dot(n, h));
   }
-  float spec = cos_a > 0.0f ? PowF(cos_a, p) : 0.0f;
+  real spec = cos_a > 0.0f ? PowF(cos_a, p) : 0.0f;
   if (b->model == RT_BRDF_ORIGINAL_BLINN_PHONG || b->model == RT_BRDF_ORIGINAL_PHONG)
     return b->kd * cos_i + b->ks * spec;
   if (normalized) {
-    float norm = BrdfIsPhongLobe(b->model) ? (p + 2.0f) * (1.0f / (2.0f * RT_PI))
-                                           : (p + 8.0f) * (1.0f / (8.0f * RT_PI));
+    real norm = BrdfIsPhongLobe(b->model) ? (p + 2.0f) * (1.0f / (2.0f * RT_PI))
+                                          : (p + 8.0f) * (1.0f / (8.0f * RT_PI));
     return (b->kd * (1.0f / RT_PI) + b->ks * (norm * spec)) * cos_i;
   }
   return (b->kd + b->ks * spec) * cos_i;
 }
 
 // Probability of choosing the specular lobe when sampling.
-RT_DEVICE float BrdfSpecularWeight(RT_PRIVATE const BrdfParams* b) {
-  float d = MaxComponent(b->kd), s = MaxComponent(b->ks);
+RT_DEVICE real BrdfSpecularWeight(RT_PRIVATE const BrdfParams* b) {
+  real d = MaxComponent(b->kd), s = MaxComponent(b->ks);
   return d + s > 0.0f ? s / (d + s) : 0.0f;
 }
 
 // Exponent of the cos^e lobe that sampling draws: the Phong lobe around the mirror
 // direction, or the half vector's distribution (cos^(p+1) for Torrance-Sparrow, which
 // samples D cos(a_h) exactly).
-RT_DEVICE float BrdfLobeExponent(RT_PRIVATE const BrdfParams* b) {
+RT_DEVICE real BrdfLobeExponent(RT_PRIVATE const BrdfParams* b) {
   return b->model == RT_BRDF_TORRANCE_SPARROW ? b->exponent + 1.0f : b->exponent;
 }
 
 // Density of a cos^e lobe, normalized over the hemisphere around its axis.
-RT_DEVICE float CosineLobePdf(float cos_a, float e) {
+RT_DEVICE real CosineLobePdf(real cos_a, real e) {
   return cos_a > 0.0f ? (e + 1.0f) * (1.0f / (2.0f * RT_PI)) * PowF(cos_a, e) : 0.0f;
 }
 
 // A direction of the cos^e lobe around unit axis `a` from u in [0, 1)^2. The root and the
 // angle come from util/trig.h, not the libraries, so both devices draw the same direction.
-RT_DEVICE float3 SampleCosineLobe(float3 a, float e, float2 u) {
+RT_DEVICE real3 SampleCosineLobe(real3 a, real e, real2 u) {
   // 1 - u keeps cos_t > 0; e = 1 is the cosine-weighted hemisphere.
-  float cos_t = e == 1.0f ? sqrt(1.0f - u.x) : PowUnit(1.0f - u.x, 1.0f / (e + 1.0f));
-  float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
-  float sin_phi, cos_phi;
+  real cos_t = e == 1.0f ? sqrt(1.0f - u.x) : PowUnit(1.0f - u.x, 1.0f / (e + 1.0f));
+  real sin_t = sqrt(fmax(RT_R(0.0), 1.0f - cos_t * cos_t));
+  real sin_phi, cos_phi;
   SinCos2Pi(u.y, &sin_phi, &cos_phi);
-  float3 s, t;
+  real3 s, t;
   CoordinateSystem(a, &s, &t);
   return s * (sin_t * cos_phi) + t * (sin_t * sin_phi) + a * cos_t;
 }
 
 // Solid-angle density of BrdfSample choosing wi.
-RT_DEVICE float BrdfPdf(RT_PRIVATE const BrdfParams* b, float3 n, float3 wo, float3 wi) {
-  float w = BrdfSpecularWeight(b);
-  float cos_i = Dot(n, wi);
-  float pdf = cos_i > 0.0f ? (1.0f - w) * cos_i * (1.0f / RT_PI) : 0.0f;
+RT_DEVICE real BrdfPdf(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real3 wi) {
+  real w = BrdfSpecularWeight(b);
+  real cos_i = Dot(n, wi);
+  real pdf = cos_i > 0.0f ? (1.0f - w) * cos_i * (1.0f / RT_PI) : 0.0f;
   if (w > 0.0f) {
-    float e = BrdfLobeExponent(b);
+    real e = BrdfLobeExponent(b);
     if (BrdfIsPhongLobe(b->model)) {
       pdf += w * CosineLobePdf(Dot(wi, Reflect(wo, n)), e);
     } else {
-      float3 h = Normalize(wi + wo);
-      float o_h = Dot(wo, h);
+      real3 h = Normalize(wi + wo);
+      real o_h = Dot(wo, h);
       if (o_h > 0.0f) pdf += w * CosineLobePdf(Dot(n, h), e) / (4.0f * o_h);
     }
   }
@@ -136,15 +136,15 @@ RT_DEVICE float BrdfPdf(RT_PRIVATE const BrdfParams* b, float3 n, float3 wo, flo
 // Draws wi for viewing direction wo from u in [0, 1)^2; returns f cos(t_i) and its density
 // (a direction below the surface returns zero but keeps its density; a lost draw returns
 // density 0, and the caller ends the path).
-RT_DEVICE float3 BrdfSample(RT_PRIVATE const BrdfParams* b, float3 n, float3 wo, float2 u,
-                            RT_PRIVATE float3* wi, RT_PRIVATE float* pdf) {
-  float w = BrdfSpecularWeight(b);
+RT_DEVICE real3 BrdfSample(RT_PRIVATE const BrdfParams* b, real3 n, real3 wo, real2 u,
+                           RT_PRIVATE real3* wi, RT_PRIVATE real* pdf) {
+  real w = BrdfSpecularWeight(b);
   if (u.x < w) {
-    float2 v = make_float2(u.x / w, u.y);  // Reuse the choice's number, rescaled.
+    real2 v = make_real2(u.x / w, u.y);  // Reuse the choice's number, rescaled.
     if (BrdfIsPhongLobe(b->model)) {
       *wi = SampleCosineLobe(Reflect(wo, n), BrdfLobeExponent(b), v);
     } else {
-      float3 h = SampleCosineLobe(n, BrdfLobeExponent(b), v);
+      real3 h = SampleCosineLobe(n, BrdfLobeExponent(b), v);
       *wi = Reflect(wo, h);
       // A half vector facing away from wo mirrors it to a direction whose own half vector
       // is -h: no lobe sample there. The draw is lost (density 0), which leaves the
@@ -155,7 +155,7 @@ RT_DEVICE float3 BrdfSample(RT_PRIVATE const BrdfParams* b, float3 n, float3 wo,
       }
     }
   } else {
-    float2 v = make_float2((u.x - w) / (1.0f - w), u.y);
+    real2 v = make_real2((u.x - w) / (1.0f - w), u.y);
     *wi = SampleCosineLobe(n, 1.0f, v);  // cos^1: the cosine-weighted hemisphere.
   }
   *pdf = BrdfPdf(b, n, wo, *wi);

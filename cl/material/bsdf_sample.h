@@ -24,12 +24,12 @@
 #define RT_LOBE_COUNT 3
 
 typedef struct BsdfSample {
-  float3 wi;      // Unit direction of the continued path.
-  float3 weight;  // f cos / pdf of the lobe, divided by the probability of choosing it.
+  real3 wi;      // Unit direction of the continued path.
+  real3 weight;  // f cos / pdf of the lobe, divided by the probability of choosing it.
   // The factor of the course's Russian-roulette throughput (hw6/SPEC.txt: "a direction
   // whose BRDF is 0.2"): the BRDF value f itself for the reflection model, the lobe's
   // reflectance for a delta lobe.
-  float3 brdf;
+  real3 brdf;
   int valid;     // 0: the path ends here (nothing reflected, or a lost draw).
   int specular;  // 1: a delta lobe (mirror, conductor, dielectric) that light sampling misses.
   int transmit;  // 1: the path passes through the surface (a dielectric's refraction).
@@ -49,7 +49,7 @@ RT_DEVICE BsdfSample NoBsdfSample() {
 }
 
 // A delta lobe's sample: reflectance `weight` along wi.
-RT_DEVICE BsdfSample SpecularBsdfSample(float3 wi, float3 weight, int transmit) {
+RT_DEVICE BsdfSample SpecularBsdfSample(real3 wi, real3 weight, int transmit) {
   BsdfSample bs = NoBsdfSample();
   bs.wi = wi;
   bs.weight = weight;
@@ -62,12 +62,12 @@ RT_DEVICE BsdfSample SpecularBsdfSample(float3 wi, float3 weight, int transmit) 
 }
 
 // A direction distributed uniformly over the hemisphere around unit n (density 1 / 2 pi).
-RT_DEVICE float3 SampleUniformHemisphere(float3 n, float2 u) {
-  float cos_t = 1.0f - u.x;  // In (0, 1]: never grazing.
-  float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
-  float sin_phi, cos_phi;
+RT_DEVICE real3 SampleUniformHemisphere(real3 n, real2 u) {
+  real cos_t = 1.0f - u.x;  // In (0, 1]: never grazing.
+  real sin_t = sqrt(fmax(RT_R(0.0), 1.0f - cos_t * cos_t));
+  real sin_phi, cos_phi;
   SinCos2Pi(u.y, &sin_phi, &cos_phi);  // Not the library's: see util/trig.h.
-  float3 s, t;
+  real3 s, t;
   CoordinateSystem(n, &s, &t);
   return s * (sin_t * cos_phi) + t * (sin_t * sin_phi) + n * cos_t;
 }
@@ -78,14 +78,14 @@ RT_DEVICE float3 SampleUniformHemisphere(float3 n, float2 u) {
 // course's references show: sampling the glass's Phong lobe in proportion to it
 // (BrdfSample) leaves 9.4 % black pixels in glass_importance against the reference's
 // 10.4 %, which moves its tone mapping.
-RT_DEVICE float3 SampleReflectionDirection(RT_PRIVATE const SurfacePoint* s, float2 u,
-                                           int importance, RT_PRIVATE float* pdf) {
+RT_DEVICE real3 SampleReflectionDirection(RT_PRIVATE const SurfacePoint* s, real2 u, int importance,
+                                          RT_PRIVATE real* pdf) {
   if (!importance) {
     *pdf = 1.0f / (2.0f * RT_PI);
     return SampleUniformHemisphere(s->n, u);
   }
-  float3 wi = SampleCosineLobe(s->n, 1.0f, u);
-  *pdf = fmax(0.0f, Dot(wi, s->n)) * (1.0f / RT_PI);
+  real3 wi = SampleCosineLobe(s->n, 1.0f, u);
+  *pdf = fmax(RT_R(0.0), Dot(wi, s->n)) * (1.0f / RT_PI);
   return wi;
 }
 

@@ -8,22 +8,23 @@
 #include "fresnel.h"
 #include "mirror.h"
 
-RT_DEVICE float ConductorFresnel(RT_PRIVATE const Material* m, RT_PRIVATE const SurfacePoint* s) {
-  return FrConductor(fmax(Dot(s->n, s->wo), 0.0f), m->refraction_index, m->absorption_index);
+RT_DEVICE real ConductorFresnel(RT_PRIVATE const Material* m, RT_PRIVATE const SurfacePoint* s) {
+  return FrConductor(fmax(Dot(s->n, s->wo), RT_R(0.0)), m->refraction_index, m->absorption_index);
 }
 
 RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
                                 RaySampler rs, RT_PRIVATE RayStack* stack) {
-  float fr = ConductorFresnel(m, s);
-  float3 r = MirrorDirection(sd, m, s, rs);
-  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * m->mirror * fr, task->medium,
-                           RT_CHILD_REFLECTED, 0));
+  real fr = ConductorFresnel(m, s);
+  real3 r = MirrorDirection(sd, m, s, rs);
+  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * ToReal3(m->mirror) * fr,
+                           task->medium, RT_CHILD_REFLECTED, 0));
 }
 
 RT_DEVICE BsdfSample SampleConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                      RT_PRIVATE const SurfacePoint* s, RaySampler rs) {
-  return SpecularBsdfSample(MirrorDirection(sd, m, s, rs), m->mirror * ConductorFresnel(m, s), 0);
+  return SpecularBsdfSample(MirrorDirection(sd, m, s, rs),
+                            ToReal3(m->mirror) * ConductorFresnel(m, s), 0);
 }
 
 #endif  // RT_MATERIAL_CONDUCTOR_H

@@ -12,8 +12,8 @@
 
 // The two directions light takes at a dielectric's surface point and their Fresnel split.
 typedef struct DielectricEvent {
-  float fr;  // Reflectance; 1 under total internal reflection.
-  float eta_i, eta_t, cos_o, cos_t;
+  real fr;  // Reflectance; 1 under total internal reflection.
+  real eta_i, eta_t, cos_o, cos_t;
 } DielectricEvent;
 
 // `s` faces the side the ray came from; s->front tells whether that is outside.
@@ -23,17 +23,17 @@ RT_DEVICE DielectricEvent DielectricFresnel(RT_PRIVATE const Material* m,
   e.cos_o = Dot(s->n, s->wo);
   e.eta_i = s->front ? 1.0f : m->refraction_index;
   e.eta_t = s->front ? m->refraction_index : 1.0f;
-  e.fr = FrDielectric(fmax(e.cos_o, 0.0f), e.eta_i, e.eta_t, &e.cos_t);
+  e.fr = FrDielectric(fmax(e.cos_o, RT_R(0.0)), e.eta_i, e.eta_t, &e.cos_t);
   return e;
 }
 
-RT_DEVICE float3 DielectricRefraction(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                                      RT_PRIVATE const SurfacePoint* s, DielectricEvent e,
-                                      RaySampler rs) {
+RT_DEVICE real3 DielectricRefraction(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                     RT_PRIVATE const SurfacePoint* s, DielectricEvent e,
+                                     RaySampler rs) {
   // Roughness frosts the glass too: the course's images blur what is seen through it.
   RaySampler frost = rs;
   frost.key = HashCombine(rs.key, 3u);
-  float3 t = Refract(-s->wo, s->n, e.eta_i / e.eta_t, e.cos_o, e.cos_t);
+  real3 t = Refract(-s->wo, s->n, e.eta_i / e.eta_t, e.cos_o, e.cos_t);
   return GlossyDirection(sd, m, t, frost);
 }
 
@@ -44,21 +44,22 @@ RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
                                  RaySampler rs, RT_PRIVATE RayStack* stack) {
   int front = s->front;
   DielectricEvent e = DielectricFresnel(m, s);
-  float fr = e.fr;
+  real fr = e.fr;
   int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0;
-  float pick = choose ? RaySample1D(rs, RT_DIM_FRESNEL_CHOICE) : 0.0f;
+  real pick = choose ? RaySample1D(rs, RT_DIM_FRESNEL_CHOICE) : 0.0f;
   int do_reflect = !choose || pick < fr;
   int do_refract = fr < 1.0f && (!choose || pick >= fr);
-  float3 w = task->weight;
+  real3 w = task->weight;
   if (do_reflect) {
-    float3 r = MirrorDirection(sd, m, s, rs);
+    real3 r = MirrorDirection(sd, m, s, rs);
     PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), choose ? w : w * fr,
                              front ? Vec3(0.0f) : task->medium, RT_CHILD_REFLECTED, !front));
   }
   if (do_refract) {
-    float3 t = DielectricRefraction(sd, m, s, e, rs);
-    PushRay(stack, ChildTask(task, SpawnRay(sd, s, t, 1), choose ? w : w * (1.0f - fr),
-                             front ? m->absorption : Vec3(0.0f), RT_CHILD_REFRACTED, front));
+    real3 t = DielectricRefraction(sd, m, s, e, rs);
+    PushRay(stack,
+            ChildTask(task, SpawnRay(sd, s, t, 1), choose ? w : w * (1.0f - fr),
+                      front ? ToReal3(m->absorption) : Vec3(0.0f), RT_CHILD_REFRACTED, front));
   }
 }
 
@@ -72,9 +73,9 @@ RT_DEVICE BsdfSample SampleDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE
                                       int choose) {
   DielectricEvent e = DielectricFresnel(m, s);
   if (choose) transmit = RaySample1D(rs, RT_DIM_FRESNEL_CHOICE) >= e.fr;
-  float w = choose ? 1.0f : (transmit ? 1.0f - e.fr : e.fr);
+  real w = choose ? 1.0f : (transmit ? 1.0f - e.fr : e.fr);
   if (!(w > 0.0f)) return NoBsdfSample();
-  float3 wi = transmit ? DielectricRefraction(sd, m, s, e, rs) : MirrorDirection(sd, m, s, rs);
+  real3 wi = transmit ? DielectricRefraction(sd, m, s, e, rs) : MirrorDirection(sd, m, s, rs);
   return SpecularBsdfSample(wi, Vec3(w), transmit);
 }
 

@@ -7,15 +7,15 @@
 #include "../sampler.h"
 #include "../scene_types.h"
 
-RT_DEVICE float3 PerturbDirection(float3 r, float roughness, float2 xi) {
-  float3 u, v;
+RT_DEVICE real3 PerturbDirection(real3 r, real roughness, real2 xi) {
+  real3 u, v;
   CoordinateSystem(r, &u, &v);
   return Normalize(r + (u * (xi.x - 0.5f) + v * (xi.y - 0.5f)) * roughness);
 }
 
 // r itself for a smooth material, else r perturbed with the ray's glossy sample.
-RT_DEVICE float3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                                 float3 r, RaySampler rs) {
+RT_DEVICE real3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                real3 r, RaySampler rs) {
   if (!RT_HAS(sd, RT_FEATURE_ROUGHNESS) || m->roughness <= 0.0f) return r;
   return PerturbDirection(r, m->roughness, RaySample2D(rs, 0x2000u));
 }

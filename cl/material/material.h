@@ -24,8 +24,8 @@ RT_DEVICE Material EvaluateMaterial(RT_PRIVATE const SceneData* sd, RT_PRIVATE S
 // The hw6 reflection model of a material (BRDF="id"): its kd, ks, exponent and complex index.
 RT_DEVICE BrdfParams MaterialBrdf(RT_PRIVATE const Material* m) {
   BrdfParams b;
-  b.kd = m->diffuse;
-  b.ks = m->specular;
+  b.kd = ToReal3(m->diffuse);
+  b.ks = ToReal3(m->specular);
   b.exponent = m->phong_exponent;
   b.model = m->brdf;
   b.flags = m->brdf_flags;
@@ -36,8 +36,8 @@ RT_DEVICE BrdfParams MaterialBrdf(RT_PRIVATE const Material* m) {
 
 // Light of irradiance e arriving from wi, reflected towards wo: the course's Blinn-Phong, or
 // the material's BRDF of assignment 6 (whose original Blinn-Phong is the same shading).
-RT_DEVICE float3 EvaluateBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                              float3 n, float3 wo, float3 wi, float3 e) {
+RT_DEVICE real3 EvaluateBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m, real3 n,
+                             real3 wo, real3 wi, real3 e) {
   if (RT_HAS(sd, RT_FEATURE_BRDF) && m->brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) {
     BrdfParams b = MaterialBrdf(m);
     return BrdfFCos(&b, n, wo, wi) * e;
@@ -76,13 +76,13 @@ RT_DEVICE int HasSpecularLobe(RT_PRIVATE const SceneData* sd, RT_PRIVATE const M
 // dielectrics keep the course's Blinn-Phong or BRDF part beside their delta lobe, as the
 // ray tree shades them; the share is in proportion to the largest reflectance of each,
 // and 0 on the inner side of a dielectric, which no light reaches directly (as in Li).
-RT_DEVICE float ReflectionShare(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                                RT_PRIVATE const SurfacePoint* s) {
+RT_DEVICE real ReflectionShare(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                               RT_PRIVATE const SurfacePoint* s) {
   if (!HasSpecularLobe(sd, m)) return 1.0f;
   if (IsTransmissive(sd, m) && !s->front) return 0.0f;
-  float g = MaxComponent(m->diffuse) + MaxComponent(m->specular);
+  real g = MaxComponent(ToReal3(m->diffuse)) + MaxComponent(ToReal3(m->specular));
   if (!(g > 0.0f)) return 0.0f;
-  float d = IsTransmissive(sd, m) ? 1.0f : MaxComponent(m->mirror);
+  real d = IsTransmissive(sd, m) ? 1.0f : MaxComponent(ToReal3(m->mirror));
   return g / (g + d);
 }
 
@@ -92,13 +92,12 @@ RT_DEVICE BsdfSample SampleReflectionLobe(RT_PRIVATE const SceneData* sd,
                                           RT_PRIVATE const Material* m,
                                           RT_PRIVATE const SurfacePoint* s, RaySampler rs,
                                           int importance) {
-  float pdf;
-  float3 wi =
-      SampleReflectionDirection(s, RaySample2D(rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
-  float cos_i = Dot(wi, s->n);
+  real pdf;
+  real3 wi = SampleReflectionDirection(s, RaySample2D(rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
+  real cos_i = Dot(wi, s->n);
   // A direction below the geometric surface would leak through it.
   if (!(pdf > 0.0f) || !(cos_i > 0.0f) || Dot(wi, s->ng) <= 0.0f) return NoBsdfSample();
-  float3 f_cos = EvaluateBsdf(sd, m, s->n, s->wo, wi, Vec3(1.0f));
+  real3 f_cos = EvaluateBsdf(sd, m, s->n, s->wo, wi, Vec3(1.0f));
   BsdfSample bs = NoBsdfSample();
   bs.wi = wi;
   bs.weight = f_cos * (1.0f / pdf);
@@ -131,7 +130,7 @@ RT_DEVICE BsdfSample SampleBsdfLobe(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
 // reflection model; the weight is divided by the probability of the choice.
 RT_DEVICE BsdfSample SampleBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 RT_PRIVATE const SurfacePoint* s, RaySampler rs, int importance) {
-  float share = ReflectionShare(sd, m, s);
+  real share = ReflectionShare(sd, m, s);
   BsdfSample bs;
   if (share < 1.0f && (share <= 0.0f || RaySample1D(rs, RT_DIM_BSDF_LOBE) >= share)) {
     if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)

@@ -3,17 +3,18 @@
 #ifndef RT_CHECKERBOARD_H
 #define RT_CHECKERBOARD_H
 
+#include "../util/math.h"
 #include "texture_types.h"
 
-RT_DEVICE int CheckerParity(float x, float offset, float scale) {
+RT_DEVICE int CheckerParity(real x, real offset, real scale) {
   return ((int)((x + offset) * scale) % 2) != 0;
 }
 
-RT_DEVICE float3 CheckerboardTexture(RT_GLOBAL const TextureDesc* t, float3 p) {
+RT_DEVICE real3 CheckerboardTexture(RT_GLOBAL const TextureDesc* t, real3 p) {
   int x = CheckerParity(p.x, t->checker_offset, t->checker_scale);
   int y = CheckerParity(p.y, t->checker_offset, t->checker_scale);
   int z = CheckerParity(p.z, t->checker_offset, t->checker_scale);
-  return (x != y) != z ? t->black : t->white;
+  return ToReal3((x != y) != z ? t->black : t->white);
 }
 
 #endif  // RT_CHECKERBOARD_H

@@ -7,13 +7,13 @@
 #include "../util/math.h"
 #include "texture_types.h"
 
-RT_DEVICE float3 UnpackTexel(uint t) {
-  return make_float3((float)(t & 255u), (float)((t >> 8) & 255u), (float)((t >> 16) & 255u));
+RT_DEVICE real3 UnpackTexel(uint t) {
+  return make_real3((real)(t & 255u), (real)((t >> 8) & 255u), (real)((t >> 16) & 255u));
 }
 
 // The texel in column x, row y (row 0 on top), clamped to the image.
-RT_DEVICE float3 FetchTexel(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t, int x,
-                            int y) {
+RT_DEVICE real3 FetchTexel(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t, int x,
+                           int y) {
   x = x < 0 ? 0 : (x >= t->width ? t->width - 1 : x);
   y = y < 0 ? 0 : (y >= t->height ? t->height - 1 : y);
   return UnpackTexel(texels[t->first_texel + y * t->width + x]);
@@ -21,30 +21,30 @@ RT_DEVICE float3 FetchTexel(RT_GLOBAL const uint* texels, RT_GLOBAL const Textur
 
 // u runs along the rows from the left edge, v down the columns from the top edge; the
 // image spans [0, 1]^2. Nearest takes the texel whose square contains (u W, v H).
-RT_DEVICE float3 LookupNearest(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t,
-                               float2 uv) {
-  return FetchTexel(texels, t, (int)floor(uv.x * (float)t->width),
-                    (int)floor(uv.y * (float)t->height));
+RT_DEVICE real3 LookupNearest(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t,
+                              real2 uv) {
+  return FetchTexel(texels, t, (int)floor(uv.x * (real)t->width),
+                    (int)floor(uv.y * (real)t->height));
 }
 
 // Bilinear interpolation between texel (i, j) and its right and lower neighbours, where
 // (i, j) = floor(u W, v H) and the weights are the fractional parts: texel (i, j) counts
 // as sampled at (i, j), not at its centre (i + 1/2, j + 1/2). This is the convention of
 // the course's images (centres give MAE 4.1 on cube_wall, this 0.23).
-RT_DEVICE float3 LookupBilinear(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t,
-                                float2 uv) {
-  float fx = uv.x * (float)t->width, fy = uv.y * (float)t->height;
-  float x0 = floor(fx), y0 = floor(fy);
-  float a = fx - x0, b = fy - y0;
+RT_DEVICE real3 LookupBilinear(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t,
+                               real2 uv) {
+  real fx = uv.x * (real)t->width, fy = uv.y * (real)t->height;
+  real x0 = floor(fx), y0 = floor(fy);
+  real a = fx - x0, b = fy - y0;
   int x = (int)x0, y = (int)y0;
-  float3 top = FetchTexel(texels, t, x, y) * (1.0f - a) + FetchTexel(texels, t, x + 1, y) * a;
-  float3 bottom =
+  real3 top = FetchTexel(texels, t, x, y) * (1.0f - a) + FetchTexel(texels, t, x + 1, y) * a;
+  real3 bottom =
       FetchTexel(texels, t, x, y + 1) * (1.0f - a) + FetchTexel(texels, t, x + 1, y + 1) * a;
   return top * (1.0f - b) + bottom * b;
 }
 
-RT_DEVICE float3 LookupImage(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t,
-                             float2 uv) {
+RT_DEVICE real3 LookupImage(RT_GLOBAL const uint* texels, RT_GLOBAL const TextureDesc* t,
+                            real2 uv) {
   return t->interpolation == RT_INTERP_BILINEAR ? LookupBilinear(texels, t, uv)
                                                 : LookupNearest(texels, t, uv);
 }

@@ -20,7 +20,7 @@
 RT_PERLIN_TABLE int kPerlinPermutation[16] = {4, 10, 11, 15, 14, 5, 13, 1, 6, 9, 3, 7, 8, 2, 0, 12};
 
 // Gradient g as (g.x, g.y, g.z) triples, in the order of Perlin's improved noise.
-RT_PERLIN_TABLE float kPerlinGradients[48] = {
+RT_PERLIN_TABLE real kPerlinGradients[48] = {
     1, 1, 0, -1, 1,  0, 1, -1, 0,  -1, -1, 0,  1, 0, 1, -1, 0, 1, 1, 0,  -1, -1, 0,  -1,
     0, 1, 1, 0,  -1, 1, 0, 1,  -1, 0,  -1, -1, 1, 1, 0, -1, 1, 0, 0, -1, 1,  0,  -1, -1};
 
@@ -28,21 +28,21 @@ RT_PERLIN_TABLE float kPerlinGradients[48] = {
 RT_DEVICE int PerlinHash(int i) { return kPerlinPermutation[(i < 0 ? -i : i) & 15]; }
 
 // The weight of a lattice point at distance t along one axis (|t| <= 1).
-RT_DEVICE float PerlinWeight(float t) {
+RT_DEVICE real PerlinWeight(real t) {
   t = fabs(t);
   return 1.0f - t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
 }
 
 // Noise in about [-1, 1], zero on the integer lattice.
-RT_DEVICE float PerlinNoise(float3 p) {
-  float fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
+RT_DEVICE real PerlinNoise(real3 p) {
+  real fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
   int i0 = (int)fx, j0 = (int)fy, k0 = (int)fz;
-  float sum = 0.0f;
+  real sum = 0.0f;
   for (int c = 0; c < 8; ++c) {
     int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
-    float dx = p.x - (fx + (float)di), dy = p.y - (fy + (float)dj), dz = p.z - (fz + (float)dk);
+    real dx = p.x - (fx + (real)di), dy = p.y - (fy + (real)dj), dz = p.z - (fz + (real)dk);
     int g = 3 * PerlinHash(i0 + di + PerlinHash(j0 + dj + PerlinHash(k0 + dk)));
-    float dot =
+    real dot =
         kPerlinGradients[g] * dx + kPerlinGradients[g + 1] * dy + kPerlinGradients[g + 2] * dz;
     sum += PerlinWeight(dx) * PerlinWeight(dy) * PerlinWeight(dz) * dot;
   }
@@ -50,8 +50,8 @@ RT_DEVICE float PerlinNoise(float3 p) {
 }
 
 // The texture's value at point p: noise at p * NoiseScale, converted to [0, 1].
-RT_DEVICE float PerlinTexture(RT_GLOBAL const TextureDesc* t, float3 p) {
-  float n = PerlinNoise(p * t->noise_scale);
+RT_DEVICE real PerlinTexture(RT_GLOBAL const TextureDesc* t, real3 p) {
+  real n = PerlinNoise(p * t->noise_scale);
   return t->noise_conversion == RT_NOISE_ABSVAL ? fabs(n) : (n + 1.0f) * 0.5f;
 }
 

@@ -16,25 +16,27 @@
 RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd,
                                            RT_PRIVATE const SurfacePoint* s) {
   Hit hit = s->hit;
-  float3 p = s->p;
+  real3 p = s->p;
   RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
   int transformed =
       RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
   TextureFrame f;
   if (hit.primitive < 0) {
     if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0)
-      p = p - inst->motion * s->time;
+      p = p - ToReal3(inst->motion) * s->time;
     f.p_obj = Normalize(transformed ? TransformPoint(inst->world_to_object, p) : p);
     f.uv = SphereUV(f.p_obj);
     SphereTangents(f.p_obj, &f.dpdu, &f.dpdv);
   } else {
     RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
     RT_GLOBAL const TriangleUV* tuv = &sd->triangle_uvs[hit.primitive];
-    float b0 = 1.0f - hit.b1 - hit.b2;
-    f.p_obj = tri->v0 * b0 + tri->v1 * hit.b1 + tri->v2 * hit.b2;
-    f.uv = make_float2(tuv->uv0.x * b0 + tuv->uv1.x * hit.b1 + tuv->uv2.x * hit.b2,
-                       tuv->uv0.y * b0 + tuv->uv1.y * hit.b1 + tuv->uv2.y * hit.b2);
-    TriangleTangents(tri->v0, tri->v1, tri->v2, tuv->uv0, tuv->uv1, tuv->uv2, &f.dpdu, &f.dpdv);
+    real b0 = 1.0f - hit.b1 - hit.b2;
+    real3 v0 = ToReal3(tri->v0), v1 = ToReal3(tri->v1), v2 = ToReal3(tri->v2);
+    f.p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
+    f.uv = make_real2(tuv->uv0.x * b0 + tuv->uv1.x * hit.b1 + tuv->uv2.x * hit.b2,
+                      tuv->uv0.y * b0 + tuv->uv1.y * hit.b1 + tuv->uv2.y * hit.b2);
+    TriangleTangents(v0, v1, v2, ToReal2(tuv->uv0), ToReal2(tuv->uv1), ToReal2(tuv->uv2), &f.dpdu,
+                     &f.dpdv);
   }
   f.dpdu_obj = f.dpdu;
   f.dpdv_obj = f.dpdv;
@@ -47,8 +49,8 @@ RT_DEVICE TextureFrame ComputeTextureFrame(RT_PRIVATE const SceneData* sd,
 
 // A colour texture's value: images on the 0..1 scale through Normalizer, Perlin noise as
 // a grey level, the checkerboard's colours. Procedural textures are evaluated at p.
-RT_DEVICE float3 TextureColor(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
-                              float2 uv, float3 p) {
+RT_DEVICE real3 TextureColor(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
+                             real2 uv, real3 p) {
   if (t->type == RT_TEXTURE_IMAGE) return LookupImage(sd->texels, t, uv) * (1.0f / t->normalizer);
   if (t->type == RT_TEXTURE_PERLIN) return Vec3(PerlinTexture(t, p));
   return CheckerboardTexture(t, p);
@@ -57,9 +59,9 @@ RT_DEVICE float3 TextureColor(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Te
 // An image's height: the mean of its channels on the 0..255 scale, from the nearest
 // texel whatever the texture's Interpolation (bilinear heights give wood_box_all MAE 4.0
 // against the course's image, nearest 0.20).
-RT_DEVICE float ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
-                            float2 uv) {
-  float3 c = LookupNearest(sd->texels, t, uv);
+RT_DEVICE real ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t,
+                           real2 uv) {
+  real3 c = LookupNearest(sd->texels, t, uv);
   return (c.x + c.y + c.z) * (1.0f / 3.0f);
 }
 
@@ -69,28 +71,28 @@ RT_DEVICE float ImageHeight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Text
 // the file models it, before its transformation, whose bumped normal is then transformed
 // as normals are (the course's bump_mapping_transformed shows both). Perlin noise is
 // differentiated in space (a forward difference of 1e-3 / NoiseScale).
-RT_DEVICE float3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t, Hit hit,
-                            TextureFrame f, float3 p, float3 n) {
+RT_DEVICE real3 BumpNormal(RT_PRIVATE const SceneData* sd, RT_GLOBAL const TextureDesc* t, Hit hit,
+                           TextureFrame f, real3 p, real3 n) {
   if (t->type == RT_TEXTURE_IMAGE) {
-    float h = ImageHeight(sd, t, f.uv);
-    float dhdu = (ImageHeight(sd, t, make_float2(f.uv.x + 1.0f / (float)t->width, f.uv.y)) - h) *
-                 t->bump_factor;
-    float dhdv = (ImageHeight(sd, t, make_float2(f.uv.x, f.uv.y + 1.0f / (float)t->height)) - h) *
-                 t->bump_factor;
+    real h = ImageHeight(sd, t, f.uv);
+    real dhdu = (ImageHeight(sd, t, make_real2(f.uv.x + 1.0f / (real)t->width, f.uv.y)) - h) *
+                t->bump_factor;
+    real dhdv = (ImageHeight(sd, t, make_real2(f.uv.x, f.uv.y + 1.0f / (real)t->height)) - h) *
+                t->bump_factor;
     RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
     int transformed =
         RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
     if (hit.primitive < 0 || !transformed) return BumpedNormal(n, f.dpdu, f.dpdv, dhdu, dhdv);
     // n = M^-T n_obj, so n_obj is proportional to M^T n.
-    float3 n_obj = Normalize(TransformNormalByInverse(inst->object_to_world, n));
-    float3 b = BumpedNormal(n_obj, f.dpdu_obj, f.dpdv_obj, dhdu, dhdv);
+    real3 n_obj = Normalize(TransformNormalByInverse(inst->object_to_world, n));
+    real3 b = BumpedNormal(n_obj, f.dpdu_obj, f.dpdv_obj, dhdu, dhdv);
     return Normalize(TransformNormalByInverse(inst->world_to_object, b));
   }
-  float eps = 1e-3f / t->noise_scale;
-  float h = PerlinTexture(t, p);
-  float3 g = make_float3(PerlinTexture(t, p + make_float3(eps, 0.0f, 0.0f)) - h,
-                         PerlinTexture(t, p + make_float3(0.0f, eps, 0.0f)) - h,
-                         PerlinTexture(t, p + make_float3(0.0f, 0.0f, eps)) - h);
+  real eps = 1e-3f / t->noise_scale;
+  real h = PerlinTexture(t, p);
+  real3 g = make_real3(PerlinTexture(t, p + make_real3(eps, 0.0f, 0.0f)) - h,
+                       PerlinTexture(t, p + make_real3(0.0f, eps, 0.0f)) - h,
+                       PerlinTexture(t, p + make_real3(0.0f, 0.0f, eps)) - h);
   return GradientBumpedNormal(n, g * (t->bump_factor / eps));
 }
 
@@ -104,22 +106,22 @@ RT_DEVICE void ApplyTextures(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfaceP
   // Procedural textures are evaluated at the object-space point of meshes but at the
   // world-space point of spheres, as the course's images show (cube_perlin, ellipsoids);
   // texture_origin restores the file's frame from the one the devices work in.
-  float3 q = (s->hit.primitive >= 0 ? f.p_obj : s->p) +
-             sd->instances[s->hit.instance].texture_origin;
+  real3 q = (s->hit.primitive >= 0 ? f.p_obj : s->p) +
+            ToReal3(sd->instances[s->hit.instance].texture_origin);
   for (int k = 0; k < RT_MAX_OBJECT_TEXTURES && list->ids[k] >= 0; ++k) {
     RT_GLOBAL const TextureDesc* t = &sd->textures[list->ids[k]];
     if (t->decal == RT_DECAL_REPLACE_NORMAL) {
-      float3 c = LookupImage(sd->texels, t, f.uv) - Vec3(127.5f);
+      real3 c = LookupImage(sd->texels, t, f.uv) - Vec3(127.5f);
       s->n = TangentToWorld(s->n, f.dpdu, f.dpdv, Normalize(c));
     } else if (t->decal == RT_DECAL_BUMP_NORMAL) {
       s->n = BumpNormal(sd, t, s->hit, f, q, s->n);
     } else if (t->decal != RT_DECAL_REPLACE_BACKGROUND) {
-      float3 c = TextureColor(sd, t, f.uv, q);
-      if (t->decal == RT_DECAL_REPLACE_KD) m->diffuse = c;
-      if (t->decal == RT_DECAL_BLEND_KD) m->diffuse = (m->diffuse + c) * 0.5f;
-      if (t->decal == RT_DECAL_REPLACE_KS) m->specular = c;
+      real3 c = TextureColor(sd, t, f.uv, q);
+      if (t->decal == RT_DECAL_REPLACE_KD) m->diffuse = ToFloat3(c);
+      if (t->decal == RT_DECAL_BLEND_KD) m->diffuse = ToFloat3((ToReal3(m->diffuse) + c) * 0.5f);
+      if (t->decal == RT_DECAL_REPLACE_KS) m->specular = ToFloat3(c);
       if (t->decal == RT_DECAL_REPLACE_ALL) {
-        m->diffuse = c;
+        m->diffuse = ToFloat3(c);
         m->unlit = 1;
         m->type = RT_MATERIAL_PLAIN;  // Nothing reflects or refracts from it either.
       }
@@ -129,9 +131,9 @@ RT_DEVICE void ApplyTextures(RT_PRIVATE const SceneData* sd, RT_PRIVATE SurfaceP
 
 // The background seen at film position pixel_uv when a replace_background texture is
 // set (its texel values are radiance, whatever the Normalizer), else the colour.
-RT_DEVICE float3 Background(RT_PRIVATE const SceneData* sd, float2 pixel_uv) {
+RT_DEVICE real3 Background(RT_PRIVATE const SceneData* sd, real2 pixel_uv) {
   RT_GLOBAL const SceneHeader* h = sd->header;
-  if (!RT_HAS(sd, RT_FEATURE_TEXTURES) || h->background_texture < 0) return h->background;
+  if (!RT_HAS(sd, RT_FEATURE_TEXTURES) || h->background_texture < 0) return ToReal3(h->background);
   RT_GLOBAL const TextureDesc* t = &sd->textures[h->background_texture];
   return LookupImage(sd->texels, t, pixel_uv);
 }

@@ -4,6 +4,8 @@
 #include <atomic>
 #include <thread>
 
+#include "device/cpu_kernel.h"
+
 namespace rt {
 
 CpuDevice::CpuDevice(int threads)
@@ -33,6 +35,8 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   const int width = flat_->header.camera.width;
   const size_t first = static_cast<size_t>(work.row_begin) * width;
   const size_t count = static_cast<size_t>(work.rows()) * width;
+  const CpuPixelFunction accumulate =
+      flat_->double_precision ? accumulate_pixel_double : accumulate_pixel_float;
   // Threads take chunks of pixels, not rows, so a pass over a band of a few rows still
   // keeps every thread busy to its end. Each pixel is taken by one thread, which adds its
   // samples in order: the image does not depend on the thread count.
@@ -44,8 +48,8 @@ uint64_t CpuDevice::render(const RenderWork& work) {
     for (size_t c; (c = next.fetch_add(kChunk)) < count;) {
       for (size_t i = first + c, end = first + std::min(count, c + kChunk); i < end; ++i) {
         const uint32_t before = accum_[i].rays;
-        AccumulatePixel(&view_, static_cast<int>(i % width), static_cast<int>(i / width),
-                        work.sample_begin, work.sample_end, &accum_[i], &primary_[i]);
+        accumulate(&view_, static_cast<int>(i % width), static_cast<int>(i / width),
+                   work.sample_begin, work.sample_end, &accum_[i], &primary_[i]);
         mine += accum_[i].rays - before;
       }
     }

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "cl/film.h"
+#include "cl/film_types.h"
 #include "flat_scene.h"
 
 namespace rt {

@@ -1,5 +1,8 @@
 #include "support/device_harness.h"
 
+#include <cstdlib>
+#include <cstring>
+
 #include "device/cpu_device.h"
 
 namespace rt::test {
@@ -13,9 +16,19 @@ RenderDevice* shared_device(Device kind, std::string* why, bool generic_kernel, 
   return pool.get(options, why);
 }
 
+bool test_precision_double() {
+  const char* p = std::getenv("RT_TEST_PRECISION");
+  return p && std::strcmp(p, "double") == 0;
+}
+
 RenderResult render_on(RenderDevice& device, const FlatScene& flat, const StopRule& stop,
                        DeviceLoadInfo* load_info) {
   Progress quiet(false, "", 0);
+  if (test_precision_double() && !flat.double_precision) {
+    FlatScene in_double = flat;
+    in_double.double_precision = true;
+    return render_camera(device, in_double, quiet, stop, nullptr, load_info);
+  }
   return render_camera(device, flat, quiet, stop, nullptr, load_info);
 }
 

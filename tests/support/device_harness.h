@@ -15,7 +15,12 @@ namespace rt::test {
 RenderDevice* shared_device(Device kind, std::string* why, bool generic_kernel = false,
                             bool kernel_cache = true);
 
-// Renders on `device` with progress off.
+// RT_TEST_PRECISION=double in the environment: every render of the harness runs the
+// shared math in double (--precision double), so a whole suite can be rerun at that
+// precision (README: precision).
+bool test_precision_double();
+
+// Renders on `device` with progress off (in double when test_precision_double()).
 RenderResult render_on(RenderDevice& device, const FlatScene& flat, const StopRule& stop = {},
                        DeviceLoadInfo* load_info = nullptr);
 

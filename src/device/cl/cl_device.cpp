@@ -103,8 +103,8 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
   program_ = nullptr;
   check_memory(flat, 0);
   DeviceLoadInfo info;
-  info.build_options =
-      programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, flat.fast_math);
+  info.build_options = programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features,
+                                              flat.fast_math, flat.double_precision);
   ClProgram& p = programs_->get(info.build_options, &info.compile_ms, &info.cache_hit);
   auto since = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();

@@ -55,10 +55,21 @@ ClProgramCache::ClProgramCache(const cl::Context& context, const cl::Device& dev
   driver_version_ = clean_cl_string(device_.getInfo<CL_DRIVER_VERSION>());
   cl_device_fp_config fp = device_.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>();
   correctly_rounded_ = (fp & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) != 0;
+  fp64_ = (" " + device_.getInfo<CL_DEVICE_EXTENSIONS>() + " ").find(" cl_khr_fp64 ") !=
+          std::string::npos;
 }
 
-std::string ClProgramCache::options_for(int features, bool fast_math) const {
+void check_precision_support(const std::string& device_name, bool has_fp64, bool double_precision) {
+  if (double_precision && !has_fp64)
+    throw std::runtime_error("OpenCL device " + device_name +
+                             " has no double precision (cl_khr_fp64): --precision double needs "
+                             "it; use --precision float or --device cpu");
+}
+
+std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision) const {
+  check_precision_support(name_, fp64_, double_precision);
   std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
+  if (double_precision) o += " -DRT_REAL_DOUBLE=1";
   if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
   // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).
   if (const char* extra = std::getenv("RT_CL_OPTIONS")) o += std::string(" ") + extra;

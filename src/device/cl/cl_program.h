@@ -23,8 +23,10 @@ class ClProgramCache {
  public:
   ClProgramCache(const cl::Context& context, const cl::Device& device, bool use_disk_cache);
   // The build options for a feature set: the defines, exact division and square root when
-  // the device offers them, `fast_math`, and RT_CL_OPTIONS (a developer's knob).
-  std::string options_for(int features, bool fast_math) const;
+  // the device offers them, `fast_math`, RT_REAL_DOUBLE for `double_precision` (which
+  // throws, naming the device, when it lacks cl_khr_fp64), and RT_CL_OPTIONS (a
+  // developer's knob). The options key both the in-memory and the on-disk cache.
+  std::string options_for(int features, bool fast_math, bool double_precision) const;
   // The program built with `options`. *compile_ms is the time it took (0 when it was in
   // memory), *cache_hit whether it came from memory or the disk cache. Throws
   // std::runtime_error (one line; the build log goes to stderr in full).
@@ -39,8 +41,13 @@ class ClProgramCache {
   std::string platform_name_, name_, device_version_, driver_version_;
   bool use_disk_cache_;
   bool correctly_rounded_ = false;
+  bool fp64_ = false;  // The device reports cl_khr_fp64.
   std::map<std::string, ClProgram> programs_;
 };
+
+// Throws std::runtime_error (one line naming the device) when `double_precision` is asked
+// of a device without cl_khr_fp64.
+void check_precision_support(const std::string& device_name, bool has_fp64, bool double_precision);
 
 // The kernel source with every shared header inlined (generated at build time).
 extern const char* const kKernelSource;

@@ -1,0 +1,13 @@
+// The shared math in float, the default (the headers' `real` is float unless
+// RT_REAL_DOUBLE is defined, as in every other translation unit that includes them).
+#include "cl/film.h"
+#include "device/cpu_kernel.h"
+
+namespace rt {
+
+void accumulate_pixel_float(const SceneData* sd, int x, int y, int sample_begin, int sample_end,
+                            PixelAccum* acc, PrimaryInfo* primary) {
+  AccumulatePixel(sd, x, y, sample_begin, sample_end, acc, primary);
+}
+
+}  // namespace rt
