@@ -7,6 +7,7 @@
 
 #include "flat_scene.h"
 #include "support/device_harness.h"
+#include "support/test_scene.h"
 
 namespace {
 
@@ -18,21 +19,7 @@ Material Diffuse(double kd) {
   return m;
 }
 
-// A camera at `eye` looking down -z through a 1x1 image whose film is so narrow that
-// every sample's ray passes (to within 1e-7 relative) through the same point.
-rt::CameraDesc PointCamera(rt::Vec3d eye, int samples) {
-  rt::CameraDesc c;
-  c.image_name = "x.png";
-  c.position = eye;
-  c.gaze = {0, 0, -1};
-  c.up = {0, 1, 0};
-  c.left = c.bottom = -1e-7;
-  c.right = c.top = 1e-7;
-  c.near_distance = 1;
-  c.width = c.height = 1;
-  c.samples = samples;
-  return c;
-}
+using rt::test::PointCamera;
 
 rt::MeshDesc Quad(double half, double z) {
   rt::MeshDesc m;

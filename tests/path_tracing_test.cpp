@@ -16,6 +16,7 @@
 #include "errors.h"
 #include "flat_scene.h"
 #include "support/device_harness.h"
+#include "support/test_scene.h"
 
 namespace {
 
@@ -30,19 +31,9 @@ Material Lambert(double a) {
   return m;
 }
 
-// A 1x1 camera at `eye` looking down -z whose film is so narrow that every sample's ray
-// passes through the same point.
+// The shared point camera (tests/support/test_scene.h), rendering with the path tracer.
 rt::CameraDesc PointCamera(rt::Vec3d eye, int samples, int path_flags) {
-  rt::CameraDesc c;
-  c.image_name = "x.png";
-  c.position = eye;
-  c.gaze = {0, 0, -1};
-  c.up = {0, 1, 0};
-  c.left = c.bottom = -1e-7;
-  c.right = c.top = 1e-7;
-  c.near_distance = 1;
-  c.width = c.height = 1;
-  c.samples = samples;
+  rt::CameraDesc c = rt::test::PointCamera(eye, samples);
   c.path_tracing = true;
   c.path_flags = path_flags;
   return c;

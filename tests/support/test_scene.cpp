@@ -160,4 +160,18 @@ std::string TempDirTest::write(const std::string& name, const std::string& text)
   return p.string();
 }
 
+CameraDesc PointCamera(Vec3d eye, int samples) {
+  CameraDesc c;
+  c.image_name = "x.png";
+  c.position = eye;
+  c.gaze = {0, 0, -1};
+  c.up = {0, 1, 0};
+  c.left = c.bottom = -1e-7;
+  c.right = c.top = 1e-7;
+  c.near_distance = 1;
+  c.width = c.height = 1;
+  c.samples = samples;
+  return c;
+}
+
 }  // namespace rt::test

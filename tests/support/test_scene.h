@@ -58,4 +58,8 @@ class TempDirTest : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
+// A camera at `eye` looking down -z through a 1x1 image whose film is so narrow that
+// every sample's ray passes (to within 1e-7 relative) through the same point.
+CameraDesc PointCamera(Vec3d eye, int samples);
+
 }  // namespace rt::test
