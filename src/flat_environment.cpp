@@ -54,15 +54,10 @@ std::vector<double> environment_importance(const ImageF& map, int mapping) {
 }
 
 void flatten_environment(const SceneDesc& scene, FlatScene& flat) {
-  flat.header.environment = -1;
   const ImageF& map = scene.environment_map;
-  for (size_t i = 0; i < flat.lights.size(); ++i) {
-    Light& light = flat.lights[i];
+  for (const Light& light : scene.lights) {
     if (light.type != RT_LIGHT_ENVIRONMENT) continue;
-    flat.header.environment = static_cast<int>(i);
     const int w = map.width, h = map.height;
-    light.param1 = static_cast<float>(w);
-    light.param2 = static_cast<float>(h);
     flat.env_texels.resize(static_cast<size_t>(w) * h);
     for (size_t p = 0; p < flat.env_texels.size(); ++p) {
       const float* t = &map.pixels[p * map.channels];
@@ -74,7 +69,19 @@ void flatten_environment(const SceneDesc& scene, FlatScene& flat) {
     for (int y = 0; y < h; ++y)
       rows[y] = append_cdf(&f[static_cast<size_t>(y) * w], w, flat.env_conditional_cdf);
     double total = append_cdf(rows.data(), h, flat.env_marginal_cdf);
-    light.area = static_cast<float>(total / (double(w) * h));
+    flat.env_power = static_cast<float>(total / (double(w) * h));
+  }
+}
+
+void place_environment(const SceneDesc& scene, FlatScene& flat) {
+  flat.header.environment = -1;
+  for (size_t i = 0; i < flat.lights.size(); ++i) {
+    Light& light = flat.lights[i];
+    if (light.type != RT_LIGHT_ENVIRONMENT) continue;
+    flat.header.environment = static_cast<int>(i);
+    light.param1 = static_cast<float>(scene.environment_map.width);
+    light.param2 = static_cast<float>(scene.environment_map.height);
+    light.area = flat.env_power;
   }
 }
 

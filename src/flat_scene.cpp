@@ -116,6 +116,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   }
   f.blas_nodes = f.nodes.size();
   flatten_textures(scene, f);
+  flatten_environment(scene, f);
   f.stats.triangles = f.triangles.size();
   // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
 #define RT_PAD_ARRAY(Type, name) \

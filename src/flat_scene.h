@@ -25,11 +25,11 @@ struct RenderOptions {
   int filter = RT_FILTER_BOX;
   float filter_sigma = 0.5f;
   int lens = RT_LENS_SQUARE;
-  bool use_scene_epsilon = true;  // Off: rely on the scale-aware offset alone.
-  bool fresnel_choice = false;    // Dielectrics: pick one ray by Fresnel instead of both.
-  bool unbiased_roulette = false;  // Path tracing: RussianRoulette without the course's bias.
+  bool use_scene_epsilon = true;        // Off: rely on the scale-aware offset alone.
+  bool fresnel_choice = false;          // Dielectrics: pick one ray by Fresnel instead of both.
+  bool unbiased_roulette = false;       // Path tracing: RussianRoulette without the course's bias.
   bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
-  bool fast_math = false;         // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
+  bool fast_math = false;               // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.
   bool camera_frame = true;
@@ -64,6 +64,7 @@ struct FlatScene {
   std::vector<FlatMesh> meshes;  // Per SceneDesc::meshes.
   size_t blas_nodes = 0;         // nodes[0, blas_nodes) are the bottom levels.
   Vec3d world_origin;            // The world point at the devices' origin.
+  float env_power = 0;           // The environment map's mean importance (flatten_environment).
   // Host-side only: which build of the shared math runs (both devices; cl/util/real.h).
   bool double_precision = false;
 
@@ -86,9 +87,12 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
 // flat.textures (src/flat_textures.cpp).
 void flatten_textures(const SceneDesc& scene, FlatScene& flat);
 
-// Places the environment light's map and its sampling distributions in flat's arrays and
-// sets the light's sizes and the header's index (src/flat_environment.cpp).
+// Places the environment light's map and its sampling distributions in flat's arrays, once
+// per scene: they do not depend on the frame (src/flat_environment.cpp).
 void flatten_environment(const SceneDesc& scene, FlatScene& flat);
+// Gives the environment's entry of flat.lights, made anew for each frame, the map's size and
+// power, and sets the header's index to it.
+void place_environment(const SceneDesc& scene, FlatScene& flat);
 
 // The function importance sampling follows over `map`'s texels (row-major): luminance times
 // the solid angle per unit map area at the texel's centre (cl/light/environment_map.h).

@@ -190,15 +190,7 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
   for (const FlatMesh& m : f.meshes) mesh_first.push_back(m.first_triangle);
   f.light_cdf.clear();
   flatten_object_lights(scene, instance_of_object, mesh_first, f);
-  // The environment's tables are the same in every frame, but its entry in `lights` was
-  // made anew above and needs the map's size and power again.
-  f.header.environment = -1;
-  if (scene.environment_map.width > 0) {
-    f.env_texels.clear();
-    f.env_marginal_cdf.clear();
-    f.env_conditional_cdf.clear();
-    flatten_environment(scene, f);
-  }
+  place_environment(scene, f);
   f.header.tlas_root = wide_top.root;
   f.stats.tlas_depth = wide_top.depth;
   f.stats.nodes = f.nodes.size();
