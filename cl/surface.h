@@ -32,7 +32,6 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
   SurfacePoint sp;
   sp.material = inst->material;
   real3 p_obj, ng_obj, n_obj;
-  int smooth = 0;   // 1 when the shading normal differs from the geometric one.
   real mag = 1.0f;  // Object-space magnitude: the unit sphere, or the triangle's vertices.
   if (hit.primitive < 0) {
     real3 o = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
@@ -55,7 +54,6 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     if (RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0) {
       RT_GLOBAL const TriangleNormals* tn = &sd->normals[hit.primitive];
       n_obj = ToReal3(tn->n0) * b0 + ToReal3(tn->n1) * hit.b1 + ToReal3(tn->n2) * hit.b2;
-      smooth = 1;
     }
   }
   sp.scale = mag;
@@ -70,13 +68,11 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     sp.scale = lin * mag + shift;
     sp.p = TransformPoint(inst->object_to_world, p_obj);
     sp.ng = Normalize(TransformNormalByInverse(inst->world_to_object, ng_obj));
-    sp.n = sp.ng;
-    if (smooth) sp.n = Normalize(TransformNormalByInverse(inst->world_to_object, n_obj));
+    sp.n = Normalize(TransformNormalByInverse(inst->world_to_object, n_obj));
   } else {
     sp.p = p_obj;
     sp.ng = Normalize(ng_obj);
-    sp.n = sp.ng;
-    if (smooth) sp.n = Normalize(n_obj);
+    sp.n = Normalize(n_obj);
   }
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0) {
     real3 motion = ToReal3(inst->motion);
