@@ -151,6 +151,21 @@ double block_bias_z(const ImageF& mine, const ImageF& ref) {
   return mean / std::sqrt(var / d.size());
 }
 
+// Mean |difference| of horizontal neighbours inside the 4x4 blocks, per channel: the
+// image's own noise (plus its detail), the same figure for both sides when their noise is
+// alike.
+double neighbour_mae(const ImageF& img) {
+  double sum = 0;
+  size_t count = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x + 1 < img.width; ++x) {
+      if (x % 4 == 3) continue;
+      for (int k = 0; k < 3; ++k) sum += std::fabs(img.at(x + 1, y, k) - img.at(x, y, k));
+      count += 3;
+    }
+  return sum / std::max<size_t>(1, count);
+}
+
 int run(const std::string& scene_file, int camera, const std::string& ref_exr,
         const std::string& ref_png, const Options& o) {
   rt::SceneDesc scene = rt::load_scene(scene_file);
@@ -203,6 +218,9 @@ int run(const std::string& scene_file, int camera, const std::string& ref_exr,
                                       [&](size_t i) { return label[i] == what; }));
   std::printf("\nbias z over %d blocks (their own spread): %+.2f\n",
               (r.sub.width / 4) * (r.sub.height / 4), block_bias_z(r.mean, ref));
+  std::printf("neighbour MAE (noise plus detail): ours %.4f, reference %.4f (ratio %.3f)\n",
+              neighbour_mae(r.mean), neighbour_mae(ref),
+              neighbour_mae(r.mean) / neighbour_mae(ref));
 
   if (desc.tonemap && !ref_png.empty()) {
     const rt::PhotographicParams& tp = desc.tonemap_params;
