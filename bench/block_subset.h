@@ -129,4 +129,24 @@ inline double mean_luminance(const ImageF& img) {
   return sum / std::max<size_t>(1, img.size());
 }
 
+// The bias of `mine` against `ref` in standard errors: the mean over 4x4 blocks of the
+// difference of their mean luminances, against its standard error from the blocks' own
+// spread (the blocks are independent, so this covers both images' noise, whatever it is).
+inline double block_bias_z(const ImageF& mine, const ImageF& ref) {
+  std::vector<double> d;
+  for (int by = 0; by < mine.height / 4; ++by)
+    for (int bx = 0; bx < mine.width / 4; ++bx) {
+      double sum = 0;
+      for (int y = by * 4; y < by * 4 + 4; ++y)
+        for (int x = bx * 4; x < bx * 4 + 4; ++x)
+          sum += Luminance(mine.at(x, y, 0), mine.at(x, y, 1), mine.at(x, y, 2)) -
+                 Luminance(ref.at(x, y, 0), ref.at(x, y, 1), ref.at(x, y, 2));
+      d.push_back(sum / 16);
+    }
+  double mean = 0, var = 0;
+  for (double v : d) mean += v / d.size();
+  for (double v : d) var += (v - mean) * (v - mean) / (d.size() - 1);
+  return mean / std::sqrt(var / d.size());
+}
+
 }  // namespace rt::bench

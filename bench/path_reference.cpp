@@ -98,21 +98,7 @@ double zero_percent(const rt::ImageF& img) {
 //  * the block MAE (reference's tone mapping) is at most 1.15 times the three-cornered-hat
 //    floor (the target), or 1.15 times the pair floor when the hat is undefined.
 bool check_render(const rt::ImageF& mine, const rt::ImageF& ref, double mae, double floor) {
-  int bw = mine.width / 4, bh = mine.height / 4;
-  std::vector<double> d;
-  for (int by = 0; by < bh; ++by)
-    for (int bx = 0; bx < bw; ++bx) {
-      double sum = 0;
-      for (int y = by * 4; y < by * 4 + 4; ++y)
-        for (int x = bx * 4; x < bx * 4 + 4; ++x)
-          sum += rt::Luminance(mine.at(x, y, 0), mine.at(x, y, 1), mine.at(x, y, 2)) -
-                 rt::Luminance(ref.at(x, y, 0), ref.at(x, y, 1), ref.at(x, y, 2));
-      d.push_back(sum / 16);
-    }
-  double mean = 0, var = 0;
-  for (double v : d) mean += v / d.size();
-  for (double v : d) var += (v - mean) * (v - mean) / (d.size() - 1);
-  double z = mean / std::sqrt(var / d.size());
+  double z = rt::bench::block_bias_z(mine, ref);
   double p = zero_percent(ref) / 100, dz = (zero_percent(mine) - zero_percent(ref)) / 100;
   double se_zero = std::sqrt(2 * p * (1 - p) / mine.size());
   bool ok_bias = std::fabs(z) <= 4, ok_zero = std::fabs(dz) <= 4.5 * se_zero + 1e-12;

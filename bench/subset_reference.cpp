@@ -133,24 +133,6 @@ void print_linear(const char* what, const Linear& l) {
               l.chi2);
 }
 
-// Bias z over 4x4 blocks from the blocks' own spread (independent of the noise model).
-double block_bias_z(const ImageF& mine, const ImageF& ref) {
-  std::vector<double> d;
-  for (int by = 0; by < mine.height / 4; ++by)
-    for (int bx = 0; bx < mine.width / 4; ++bx) {
-      double sum = 0;
-      for (int y = by * 4; y < by * 4 + 4; ++y)
-        for (int x = bx * 4; x < bx * 4 + 4; ++x)
-          sum += rt::Luminance(mine.at(x, y, 0), mine.at(x, y, 1), mine.at(x, y, 2)) -
-                 rt::Luminance(ref.at(x, y, 0), ref.at(x, y, 1), ref.at(x, y, 2));
-      d.push_back(sum / 16);
-    }
-  double mean = 0, var = 0;
-  for (double v : d) mean += v / d.size();
-  for (double v : d) var += (v - mean) * (v - mean) / (d.size() - 1);
-  return mean / std::sqrt(var / d.size());
-}
-
 // Mean |difference| of horizontal neighbours inside the 4x4 blocks, per channel: the
 // image's own noise (plus its detail), the same figure for both sides when their noise is
 // alike.
@@ -217,7 +199,7 @@ int run(const std::string& scene_file, int camera, const std::string& ref_exr,
     print_linear(what.c_str(), linear(r.mean, r.variance, ref, n, n_ref,
                                       [&](size_t i) { return label[i] == what; }));
   std::printf("\nbias z over %d blocks (their own spread): %+.2f\n",
-              (r.sub.width / 4) * (r.sub.height / 4), block_bias_z(r.mean, ref));
+              (r.sub.width / 4) * (r.sub.height / 4), rt::bench::block_bias_z(r.mean, ref));
   std::printf("neighbour MAE (noise plus detail): ours %.4f, reference %.4f (ratio %.3f)\n",
               neighbour_mae(r.mean), neighbour_mae(ref),
               neighbour_mae(r.mean) / neighbour_mae(ref));
