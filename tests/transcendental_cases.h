@@ -46,6 +46,13 @@ void ExpectWithin(const char* what, Worst w, double bound) {
   EXPECT_LE(w.ulps, bound) << what << " at " << w.at;
 }
 
+// The sine (part 0) or the cosine (part 1) from a function that returns both.
+real SinCosPart(void (*sin_cos)(real, real*, real*), real x, int part) {
+  real s, c;
+  sin_cos(x, &s, &c);
+  return part == 0 ? s : c;
+}
+
 const int kGrid = 1 << 20;
 const long double kPiL = 3.141592653589793238462643383279502884L;
 
@@ -93,16 +100,8 @@ TEST(RT_SUITE, PowOfUnitBasesAndLargerOnes) {
 }
 
 TEST(RT_SUITE, SinCosOverEightTurns) {
-  auto sin_of = [](real x) {
-    real s, c;
-    SinCos(x, &s, &c);
-    return s;
-  };
-  auto cos_of = [](real x) {
-    real s, c;
-    SinCos(x, &s, &c);
-    return c;
-  };
+  auto sin_of = [](real x) { return SinCosPart(SinCos, x, 0); };
+  auto cos_of = [](real x) { return SinCosPart(SinCos, x, 1); };
   Worst ws =
       WorstOnGrid(-8 * kPiL, 8 * kPiL, kGrid, sin_of, [](long double x) { return std::sin(x); });
   Worst wc =
@@ -114,16 +113,8 @@ TEST(RT_SUITE, SinCosOverEightTurns) {
 }
 
 TEST(RT_SUITE, SinCos2PiOverATurn) {
-  auto sin_of = [](real u) {
-    real s, c;
-    SinCos2Pi(u, &s, &c);
-    return s;
-  };
-  auto cos_of = [](real u) {
-    real s, c;
-    SinCos2Pi(u, &s, &c);
-    return c;
-  };
+  auto sin_of = [](real u) { return SinCosPart(SinCos2Pi, u, 0); };
+  auto cos_of = [](real u) { return SinCosPart(SinCos2Pi, u, 1); };
   // The reference reduces 4u to the nearest quarter turn exactly too, so that its zeros are
   // exact (2 pi u in long double is not a multiple of pi where sin 2 pi u = 0).
   auto quarter_turns = [](long double u, long double* s, long double* c) {
