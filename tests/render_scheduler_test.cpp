@@ -86,10 +86,14 @@ TEST(RenderScheduler, WideImagesTakeSeveralSamplesPerBand) {
     ExpectCoversOnce(pass, height, align);
     const int n = pass[0].samples();
     EXPECT_LE(n, 4 * last);
-    if (i > 0) EXPECT_GT(n, 1) << "pass " << i;
+    if (i > 0) {
+      EXPECT_GT(n, 1) << "pass " << i;
+    }
     for (const rt::RenderWork& w : pass) {
       // At least 64 Ki pixels, within the rounding to the alignment.
-      if (w.row_end != height) EXPECT_GE(w.rows() + align / 2, min_rows);
+      if (w.row_end != height) {
+        EXPECT_GE(w.rows() + align / 2, min_rows);
+      }
       EXPECT_LE(per_row_sample * w.rows() * n, rt::RenderScheduler::kSplitSeconds);
     }
     last = n;
