@@ -50,6 +50,13 @@ OptionTable<RenderOptions> make_device_table() {
       .flag("--background-on-secondary-miss", RT_FIELD(background_on_secondary_miss),
             "reflected and refracted rays that escape see BackgroundColor (otherwise black; "
             "camera rays always see it)")
+      .choice("--reflection-offset",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"facing", true}},
+              RT_FIELD(facing_reflection),
+              "where a mirror's or conductor's reflected ray starts when the surface is seen "
+              "from behind: course: on the side of the normal as modelled, as the course's "
+              "renderer (the ray meets the surface again; hw2 grass_desert needs it); facing: "
+              "on the viewer's side")
       .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)

@@ -29,6 +29,7 @@ struct RenderOptions {
   bool fresnel_choice = false;          // Dielectrics: pick one ray by Fresnel instead of both.
   bool unbiased_roulette = false;       // Path tracing: RussianRoulette without the course's bias.
   bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
+  bool facing_reflection = false;       // Not the course's reflection offset (mirror.h).
   bool fast_math = false;               // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.
