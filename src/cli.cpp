@@ -61,11 +61,14 @@ OptionTable<RenderOptions> make_device_table() {
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)
       .choice("--precision",
-              std::vector<std::pair<std::string, bool>>{{"float", false}, {"double", true}},
-              RT_FIELD(double_precision),
+              std::vector<std::pair<std::string, Precision>>{{"float", Precision::kFloat},
+                                                             {"double", Precision::kDouble},
+                                                             {"auto", Precision::kAuto}},
+              RT_FIELD(precision),
               "arithmetic of the shared math on both devices: double is exact to far smaller "
               "distances and costs time (README: precision); scene arrays stay float; an "
-              "OpenCL device without cl_khr_fp64 refuses double")
+              "OpenCL device without cl_khr_fp64 refuses double; auto: double where the "
+              "device has it (always on the CPU reference), else float with a notice")
       .flag("--fast-math", RT_FIELD(fast_math),
             "OpenCL: build with -cl-fast-relaxed-math (faster, less exact; the CPU reference "
             "is always precise)");

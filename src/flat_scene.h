@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bvh_build.h"
+#include "precision.h"
 #include "scene.h"
 #include "util/page_aligned.h"
 
@@ -34,7 +35,9 @@ struct RenderOptions {
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.
   bool camera_frame = true;
-  bool double_precision = false;  // Computation in double (cl/util/real.h); storage stays float.
+  // Computation in double or float (cl/util/real.h); storage stays float. kAuto must be
+  // resolved against the device (resolve_precision) before flatten_scene.
+  Precision precision = Precision::kFloat;
   StopRule stop;
   BvhOptions bvh;
 };
