@@ -139,9 +139,12 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0) |
             (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0) |
             (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
-            (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0);
+            (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
+            (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0);
   f.fast_math = options.fast_math;
-  f.double_precision = options.double_precision;
+  if (options.precision == Precision::kAuto)
+    throw std::logic_error("--precision auto reached flatten_scene unresolved (resolve_precision)");
+  f.double_precision = options.precision == Precision::kDouble;
   f.stats.bvh_build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return f;
