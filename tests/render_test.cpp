@@ -72,11 +72,11 @@ TEST(Render, NoiseTargetStopsEarlyWithEqualSampleCounts) {
   rt::RenderResult r = RenderAreaWithStop(stop, 4096);
   EXPECT_LT(r.spp, 4096);
   EXPECT_EQ(CommonSampleCount(r), r.spp);
-  EXPECT_LT(rt::relative_noise(r.accum), 0.05);
+  EXPECT_LT(rt::relative_noise(r.accum, r.width), 0.05);
   // The pass before the last (half as many samples, or fewer) was still too noisy, or the
   // rule would have stopped there: the estimate falls with more samples.
   rt::RenderResult half = RenderAreaWithStop({}, r.spp / 2);
-  EXPECT_GT(rt::relative_noise(half.accum), rt::relative_noise(r.accum));
+  EXPECT_GT(rt::relative_noise(half.accum, half.width), rt::relative_noise(r.accum, r.width));
 }
 
 TEST(Render, TimeLimitKeepsEqualSampleCounts) {
@@ -90,7 +90,8 @@ TEST(Render, TimeLimitKeepsEqualSampleCounts) {
 }
 
 TEST(Render, RelativeNoiseIsZeroWithoutVarianceInformation) {
-  EXPECT_EQ(rt::relative_noise(RenderAreaWithStop({}, 1).accum), 0.0);
+  rt::RenderResult once = RenderAreaWithStop({}, 1);
+  EXPECT_EQ(rt::relative_noise(once.accum, once.width), 0.0);
 }
 
 }  // namespace
