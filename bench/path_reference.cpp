@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -317,6 +318,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "path_reference: unknown option %s\n", k.c_str());
       return 2;
     }
+  }
+  // As a test (--check), a clone without the course's scenes beside it skips, saying why.
+  if (o.check && !std::filesystem::exists(argv[1])) {
+    std::printf("SKIP: %s is not here (the course's scenes, ../shared)\n", argv[1]);
+    return 77;
   }
   try {
     return run(argv[1], argv[2], o);
