@@ -36,11 +36,14 @@ struct Args {
   bool no_cache = false;
 };
 
+constexpr double kTrim = 0.001;  // The share of largest error terms TrimmedRelativeMse drops.
+
 struct Row {
   sweep::Config config;
   int spp = 0;
   double build_ms = 0, cpu_s = 0, wall_s = 0, rel_mse = 0, noise2 = 0;
   double rel_mse_full = 0, bias_full = 0;  // Path tracing: against the full transport.
+  double trimmed = 0, trimmed_full = 0;    // Path tracing: the largest 0.1 % dropped.
   uint64_t nonfinite = 0;
   std::string verdict, vs_float;
 };
@@ -107,7 +110,9 @@ void PrintRow(const Row& r, bool path) {
   std::printf("| %s | %s | %s%s | %d | %.3f | %.3f | %.3g | %.3g | %s |", r.config.axis.c_str(),
               r.config.name.c_str(), r.config.device.c_str(), r.config.generic ? " generic" : "",
               r.spp, r.cpu_s, r.wall_s, r.rel_mse, r.noise2, r.verdict.c_str());
-  if (path) std::printf(" %.3g | %+.2f %% |", r.rel_mse_full, 100.0 * r.bias_full);
+  if (path)
+    std::printf(" %.3g | %.3g | %.3g | %+.2f %% |", r.trimmed, r.rel_mse_full, r.trimmed_full,
+                100.0 * r.bias_full);
   std::printf(" %s | %llu |\n", r.vs_float.c_str(), static_cast<unsigned long long>(r.nonfinite));
   std::fflush(stdout);
 }
@@ -115,12 +120,13 @@ void PrintRow(const Row& r, bool path) {
 void WriteTsv(const std::string& path, const std::vector<Row>& rows) {
   std::ofstream t(path);
   t << "axis\tsetting\tdevice\tspp\tbuild_ms\tcpu_s\twall_s\trel_mse\tnoise2\trel_mse_full\t"
-       "bias_full\n";
+       "bias_full\ttrimmed\ttrimmed_full\n";
   for (const Row& r : rows)
     t << r.config.axis << '\t' << r.config.name << '\t' << r.config.device
       << (r.config.generic ? "-generic" : "") << '\t' << r.spp << '\t' << r.build_ms << '\t'
       << r.cpu_s << '\t' << r.wall_s << '\t' << r.rel_mse << '\t' << r.noise2 << '\t'
-      << r.rel_mse_full << '\t' << r.bias_full << '\n';
+      << r.rel_mse_full << '\t' << r.bias_full << '\t' << r.trimmed << '\t' << r.trimmed_full
+      << '\n';
 }
 
 }  // namespace
@@ -200,6 +206,8 @@ int main(int argc, char** argv) {
       if (full) {
         row.rel_mse_full = rt::relative_mse(rgb, full->rgb, floor);
         row.bias_full = sweep::MeanBias(rgb, full->rgb);
+        row.trimmed = sweep::TrimmedRelativeMse(rgb, ref.rgb, floor, kTrim);
+        row.trimmed_full = sweep::TrimmedRelativeMse(rgb, full->rgb, floor, kTrim);
       }
       const std::string same = c.device + " " + std::to_string(row.spp);
       if (c.axis == "spp") float_images[same] = rgb;

@@ -3,17 +3,22 @@
 # then a grid of faster settings on both devices), prints its table, and plots render
 # CPU-seconds against relative MSE with gnuplot (Debian package gnuplot-nox) into OUT.png.
 # A path-traced camera gets two panels: each estimator against the converged image of its
-# own kind (noise), and against the full light transport (noise and bias).
+# own kind (noise), and against the full light transport (noise and bias), both with the
+# largest 0.1 % of the error terms dropped (bench/sweep_run.h: TrimmedRelativeMse).
 #
 # usage: bench/sweep.sh SCENE.xml OUT [sweep options: --scale F --ref-spp N --camera N --reps N]
+#        RT_SWEEP_REPLOT=1 bench/sweep.sh SCENE.xml OUT: only plot OUT.tsv again
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 scene="$1"; out="$2"; shift 2
-"$here/build/sweep" "$scene" --tsv "$out.tsv" "$@" | tee "$out.md"
+if [ -z "${RT_SWEEP_REPLOT:-}" ]; then
+  "$here/build/sweep" "$scene" --tsv "$out.tsv" "$@" | tee "$out.md"
+fi
 if ! command -v gnuplot >/dev/null; then
   echo "(no gnuplot: apt-get install gnuplot-nox to get the plot)"; exit 0
 fi
-# Columns: 1 axis, 2 setting, 3 device, 4 spp, 6 CPU-s, 8 rel. MSE, 10 rel. MSE vs full.
+# Columns: 1 axis, 2 setting, 3 device, 4 spp, 6 CPU-s, 8 rel. MSE, 10 rel. MSE vs full,
+# 12 and 13 the same with the largest 0.1 % of the error terms dropped (path tracing).
 series() {  # AXIS DEVICE: a gnuplot `using` filter of the rows of that axis and device
   echo "(strcol(1) eq \"$1\" && strcol(3) eq \"$2\" ? \$6 : 1/0)"
 }
@@ -33,12 +38,12 @@ set xlabel "render CPU-seconds"
 set key below
 set datafile separator "\t"
 set multiplot layout 1,2 title "$(basename "$scene"): estimators, spp 4-64 (CPU)"
-set title "relative MSE against the converged image of the same estimator (noise)"
-set ylabel "relative MSE"
-plot ${plots//COL/8}
-set title "relative MSE against the full light transport (noise and bias)"
+set title "against the converged image of the same estimator (noise), largest 0.1 % dropped"
+set ylabel "relative MSE, largest 0.1 % of terms dropped"
+plot ${plots//COL/12}
+set title "against the full light transport (noise and bias), largest 0.1 % dropped"
 unset key
-plot ${plots//COL/10}
+plot ${plots//COL/13}
 unset multiplot
 GP
 else

@@ -116,6 +116,21 @@ Reference ConvergedReference(const std::string& scene_path, rt::SceneDesc& scene
   return ref;
 }
 
+double TrimmedRelativeMse(const std::vector<float>& img, const std::vector<float>& ref,
+                          double floor, double share) {
+  std::vector<double> terms(ref.size());
+  for (size_t i = 0; i < ref.size(); ++i) {
+    const double d = static_cast<double>(img[i]) - ref[i];
+    terms[i] = d * d / (static_cast<double>(ref[i]) * ref[i] + floor * floor);
+  }
+  const size_t keep = terms.size() - static_cast<size_t>(share * terms.size());
+  if (keep == 0) return 0;
+  std::nth_element(terms.begin(), terms.begin() + (keep - 1), terms.end());
+  double sum = 0;
+  for (size_t i = 0; i < keep; ++i) sum += terms[i];
+  return sum / static_cast<double>(keep);
+}
+
 double MeanBias(const std::vector<float>& img, const std::vector<float>& ref) {
   double a = 0, b = 0;
   for (size_t i = 0; i < ref.size(); ++i) {

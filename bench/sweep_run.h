@@ -52,6 +52,14 @@ Reference ConvergedReference(const std::string& scene_path, rt::SceneDesc& scene
 // The default cache: $XDG_CACHE_HOME/raytracer/sweep, else $HOME/.cache/raytracer/sweep.
 std::string DefaultCacheDir();
 
+// rt::relative_mse without the largest `share` of its per-value terms. A path tracer's
+// error is heavy-tailed (a vertex near the point light, a rare caustic): over 64x64 pixels
+// a dozen values can outweigh the rest, and the plain mean then moves up and down with
+// the sample count; dropping the largest 0.1 % (as rendering papers often report it)
+// shows the trend the rest of the image follows.
+double TrimmedRelativeMse(const std::vector<float>& img, const std::vector<float>& ref,
+                          double floor, double share);
+
 // Mean over pixels and channels of img / mean of ref, minus 1: the image's overall bias.
 double MeanBias(const std::vector<float>& img, const std::vector<float>& ref);
 
