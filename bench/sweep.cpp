@@ -179,13 +179,14 @@ int main(int argc, char** argv) {
     std::printf(
         "\nrender CPU-s: user + system of the process (median of %d); rel. MSE: mean of "
         "(x - r)^2 / (r^2 + f^2), f = %.3g (one output level); est.: relative_noise^2, "
-        "what --noise-target sees\n\n",
-        a.reps, floor);
+        "what --noise-target sees%s\n\n",
+        a.reps, floor, path ? "; trimmed: the largest 0.1 % of the terms dropped" : "");
     std::printf(
         "| axis | setting | device | spp | render CPU-s | wall s | rel. MSE | est. | "
         "Welch (pooled) vs reference |%s double vs float | non-finite |\n"
         "|---|---|---|---:|---:|---:|---:|---:|---|%s---|---:|\n",
-        path ? " rel. MSE vs full transport | mean vs full |" : "", path ? "---:|---:|" : "");
+        path ? " trimmed | rel. MSE vs full transport | trimmed | mean vs full |" : "",
+        path ? "---:|---:|---:|---:|" : "");
     std::vector<Row> rows;
     std::map<std::string, std::vector<float>> float_images;  // "device spp" of the spp axis.
     for (const sweep::Config& c : grid) {
