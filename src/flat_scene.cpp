@@ -19,7 +19,7 @@ static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 144, "Instance layout");
 static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
 static_assert(sizeof(SceneHeader) == 208, "SceneHeader layout");
-static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
+static_assert(sizeof(TextureDesc) == 96, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
 static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
 
@@ -164,6 +164,9 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
   Vec3d w = normalize(c.gaze) * -1.0;
   Vec3d u = normalize(cross(c.up, w));
   Vec3d v = cross(w, u);
+  // A left-handed camera (the two public CENG795 renderers that read the attribute agree)
+  // keeps v and w and reverses u: the same rays, mirrored left to right on the film.
+  if (c.left_handed) u = u * -1.0;
   cam.position = to_float3(c.position - origin);  // The frame's origin by default.
   cam.u = to_float3(u);
   cam.v = to_float3(v);
