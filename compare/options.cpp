@@ -46,7 +46,10 @@ Table make_welch() {
       .flag("--pooled", RT_FIELD(welch.pooled),
             "per-sample variance of a pixel = the larger of the two renders' (same scene and "
             "sampler, other sample counts): a low-spp render that missed a pixel's rare "
-            "bright paths reports zero variance")
+            "bright paths reports zero variance; the default when the sample counts differ")
+      .flag("--unpooled", RT_FIELD(unpooled),
+            "each render's own per-sample variance even when the sample counts differ (a "
+            "heavy-tailed path tracer then raises false alarms)")
       .integer("--tile", "K", Range::closed(1, 1 << 16), RT_FIELD(welch.tile),
                "test K x K tiles (mean of the pixel means, variances summed): power against "
                "small, spatially smooth biases")

@@ -18,6 +18,7 @@ struct CompareOptions {
   PairedOptions paired;
   ExactOptions exact;
   bool allow_weighted = false;
+  bool unpooled = false;  // welch: never pool, even when the sample counts differ.
   std::string out_dir;
   double gain = 4;
   int threshold = 8, downsample = 4;

@@ -136,8 +136,9 @@ OptionTable<CliOptions> make_raytracer_table() {
       .default_is("none")
       .real("--noise-target", "E", Range::positive(), RT_FIELD(render.stop.noise_target),
             "stop sampling once the image's estimated relative error (root mean of var(pixel "
-            "mean) / (mean^2 + 1), radiance on the 0-255 scale) is below E; E^2 estimates the "
-            "relative MSE of bench/sweep")
+            "mean) / (mean^2 + f^2), f one output level: 1 on the 0-255 scale, Yavg / (key * "
+            "255) on a tone-mapped HDR camera) is below E; E^2 estimates the relative MSE of "
+            "bench/sweep")
       .default_is("none");
   t.section("Acceleration structure")
       .integer("--bvh-bins", "N", Range::closed(2, 256), RT_FIELD(render.bvh.bins),

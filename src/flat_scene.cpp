@@ -150,6 +150,12 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   return f;
 }
 
+StopRule camera_stop_rule(const StopRule& options, const CameraDesc& camera) {
+  StopRule rule = options;
+  rule.tonemap_key = camera.tonemap ? camera.tonemap_params.key : 0.0;
+  return rule;
+}
+
 void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options) {
   const CameraDesc& c = scene.cameras[camera];
   const auto start = std::chrono::steady_clock::now();

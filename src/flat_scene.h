@@ -16,7 +16,12 @@ namespace rt {
 struct StopRule {
   double time_limit_s = 0;  // Wall-clock budget of the render; 0: none.
   double noise_target = 0;  // Stop once relative_noise() falls below this; 0: never.
+  // > 0: the film is HDR, tone mapped with this key; sets the noise's floor (noise_floor).
+  double tonemap_key = 0;
 };
+
+// The rule for one camera: the options' rule, with the floor of its film's noise.
+StopRule camera_stop_rule(const StopRule& options, const CameraDesc& camera);
 
 struct RenderOptions {
   uint32_t seed = 0;

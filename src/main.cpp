@@ -79,7 +79,9 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
                           static_cast<uint64_t>(fc.width) * fc.height * fc.samples);
     rt::DeviceLoadInfo load;
     rt::RenderResult r =
-        rt::render_camera(*device, flat, progress, opt.render.stop, &rt::stop_requested(), &load);
+        rt::render_camera(*device, flat, progress,
+                          rt::camera_stop_rule(opt.render.stop, s.desc.cameras[c]),
+                          &rt::stop_requested(), &load);
     progress.finish();
     const std::string out = rt::image_path(opt, s, c);
     rt::write_outputs(opt, s.path, c, s.desc.cameras[c], device->name(), r, out);

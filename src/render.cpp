@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/tonemap.h"
+
 namespace rt {
 
 // The image is the float quotient the PNGs have always been made from (sum times the
 // reciprocal weight, in float); PixelEstimate's double mean is kept for the statistics, as
 // changing either would change output bytes.
-std::vector<float> RenderResult::rgb() const {
+std::vector<float> RenderResult::rgb() const { return film_rgb(accum); }
+
+std::vector<float> film_rgb(const std::vector<PixelAccum>& accum) {
   std::vector<float> out(accum.size() * 3);
   for (size_t i = 0; i < accum.size(); ++i) {
     const float4& s = accum[i].sum;
@@ -41,14 +45,61 @@ PixelEstimate estimate_pixel(const PixelAccum& a) {
   return e;
 }
 
-double relative_noise(const std::vector<PixelAccum>& accum) {
-  double sum = 0;
-  for (const PixelAccum& a : accum) {
-    const PixelEstimate e = estimate_pixel(a);
-    if (e.n < 2) return 0;
-    for (int c = 0; c < 3; ++c) sum += e.var[c] / e.n / (e.mean[c] * e.mean[c] + 1.0);
+double relative_noise(const std::vector<PixelAccum>& accum, int width, double floor) {
+  if (accum.empty() || width <= 0) return 0;
+  const int height = static_cast<int>(accum.size() / static_cast<size_t>(width));
+  const double floor2 = floor * floor;
+  std::vector<PixelEstimate> e(accum.size());
+  for (size_t i = 0; i < accum.size(); ++i) {
+    e[i] = estimate_pixel(accum[i]);
+    if (e[i].n < 2) return 0;
   }
-  return accum.empty() ? 0 : std::sqrt(sum / (3.0 * accum.size()));
+  constexpr int kTile = 8;
+  double sum = 0;
+  for (int ty = 0; ty < height; ty += kTile)
+    for (int tx = 0; tx < width; tx += kTile)
+      for (int c = 0; c < 3; ++c) {
+        const int y1 = std::min(height, ty + kTile), x1 = std::min(width, tx + kTile);
+        double var = 0, mean2 = 0;  // Of the tile: sums of var / n and of mean^2 + floor^2.
+        for (int y = ty; y < y1; ++y)
+          for (int x = tx; x < x1; ++x) {
+            const PixelEstimate& p = e[static_cast<size_t>(y) * width + x];
+            var += p.var[c] / p.n;
+            mean2 += p.mean[c] * p.mean[c] + floor2;
+          }
+        const double tile = var / mean2;
+        for (int y = ty; y < y1; ++y)
+          for (int x = tx; x < x1; ++x) {
+            const PixelEstimate& p = e[static_cast<size_t>(y) * width + x];
+            sum += p.var[c] > 0 ? p.var[c] / p.n / (p.mean[c] * p.mean[c] + floor2) : tile;
+          }
+      }
+  return std::sqrt(sum / (3.0 * static_cast<double>(accum.size())));
+}
+
+double relative_mse(const std::vector<float>& img, const std::vector<float>& ref, double floor) {
+  const double floor2 = floor * floor;
+  double s = 0;
+  for (size_t i = 0; i < ref.size(); ++i) {
+    const double d = static_cast<double>(img[i]) - ref[i];
+    s += d * d / (static_cast<double>(ref[i]) * ref[i] + floor2);
+  }
+  return ref.empty() ? 0 : s / static_cast<double>(ref.size());
+}
+
+double noise_floor(const std::vector<float>& rgb, double tonemap_key) {
+  const size_t n = rgb.size() / 3;
+  if (!(tonemap_key > 0) || n == 0) return 1.0;
+  // The log-average of the photographic operator (src/image/tonemap.h), delta 1e-6.
+  double log_sum = 0;
+  for (size_t i = 0; i < n; ++i)
+    log_sum +=
+        std::log(1e-6 + std::max(0.0, Luminance(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2])));
+  return std::exp(log_sum / static_cast<double>(n)) / (tonemap_key * 255.0);
+}
+
+double noise_floor(const std::vector<PixelAccum>& accum, double tonemap_key) {
+  return tonemap_key > 0 ? noise_floor(film_rgb(accum), tonemap_key) : 1.0;
 }
 
 }  // namespace rt

@@ -58,25 +58,17 @@ rt::RenderResult RenderAreaWithStop(const rt::StopRule& stop, int spp) {
   return rt::test::render_cpu(flat, 2, stop);
 }
 
-// Every pixel must hold the same number of samples: rules stop between passes only.
-int CommonSampleCount(const rt::RenderResult& r) {
-  int n = static_cast<int>(r.accum[0].sum_sq.w);
-  for (const PixelAccum& a : r.accum)
-    if (static_cast<int>(a.sum_sq.w) != n) return -1;
-  return n;
-}
-
 TEST(Render, NoiseTargetStopsEarlyWithEqualSampleCounts) {
   rt::StopRule stop;
   stop.noise_target = 0.05;
   rt::RenderResult r = RenderAreaWithStop(stop, 4096);
   EXPECT_LT(r.spp, 4096);
-  EXPECT_EQ(CommonSampleCount(r), r.spp);
-  EXPECT_LT(rt::relative_noise(r.accum), 0.05);
+  EXPECT_EQ(rt::test::common_sample_count(r), r.spp);
+  EXPECT_LT(rt::relative_noise(r.accum, r.width), 0.05);
   // The pass before the last (half as many samples, or fewer) was still too noisy, or the
   // rule would have stopped there: the estimate falls with more samples.
   rt::RenderResult half = RenderAreaWithStop({}, r.spp / 2);
-  EXPECT_GT(rt::relative_noise(half.accum), rt::relative_noise(r.accum));
+  EXPECT_GT(rt::relative_noise(half.accum, half.width), rt::relative_noise(r.accum, r.width));
 }
 
 TEST(Render, TimeLimitKeepsEqualSampleCounts) {
@@ -85,12 +77,13 @@ TEST(Render, TimeLimitKeepsEqualSampleCounts) {
   rt::RenderResult r = RenderAreaWithStop(stop, 1 << 16);
   EXPECT_GE(r.spp, 1);
   EXPECT_LT(r.spp, 1 << 16);
-  EXPECT_EQ(CommonSampleCount(r), r.spp);
+  EXPECT_EQ(rt::test::common_sample_count(r), r.spp);
   EXPECT_LT(r.seconds, 2.0);  // Far below the 65536 samples asked (about 30 s here).
 }
 
 TEST(Render, RelativeNoiseIsZeroWithoutVarianceInformation) {
-  EXPECT_EQ(rt::relative_noise(RenderAreaWithStop({}, 1).accum), 0.0);
+  rt::RenderResult once = RenderAreaWithStop({}, 1);
+  EXPECT_EQ(rt::relative_noise(once.accum, once.width), 0.0);
 }
 
 }  // namespace

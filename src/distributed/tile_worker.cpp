@@ -49,7 +49,8 @@ TileResult TileWorker::render(const TileTask& task) {
   Progress quiet(false, name, 0);
   TileResult out;
   out.task = task;
-  out.spp = sample_rows(*device_, cam, task.row_begin, task.row_end, quiet, opt_.render.stop);
+  out.spp = sample_rows(*device_, cam, task.row_begin, task.row_end, quiet,
+                        camera_stop_rule(opt_.render.stop, scene_.desc.cameras[task.camera]));
   device_->read_accum(&accum_);
   device_->read_primary(&primary_);
   const size_t first = static_cast<size_t>(task.row_begin) * cam.width;

@@ -98,7 +98,8 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
       break;
     if (stop.noise_target > 0 && scheduler.samples_done() >= 2) {
       device.read_accum(&accum);
-      if (relative_noise(accum) < stop.noise_target) break;
+      const double floor = noise_floor(accum, stop.tonemap_key);
+      if (relative_noise(accum, cam.width, floor) < stop.noise_target) break;
     }
   }
   return scheduler.samples_done();

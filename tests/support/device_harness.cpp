@@ -39,4 +39,12 @@ RenderResult render_cpu(const FlatScene& flat, int threads, const StopRule& stop
 
 const char* device_label(Device kind) { return kind == Device::kCpu ? "cpu" : "cl"; }
 
+int common_sample_count(const RenderResult& r) {
+  if (r.accum.empty()) return -1;
+  const int n = static_cast<int>(r.accum[0].sum_sq.w);
+  for (const PixelAccum& a : r.accum)
+    if (static_cast<int>(a.sum_sq.w) != n) return -1;
+  return n;
+}
+
 }  // namespace rt::test

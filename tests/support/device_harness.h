@@ -27,6 +27,10 @@ RenderResult render_on(RenderDevice& device, const FlatScene& flat, const StopRu
 // Renders on a fresh CPU reference of `threads` threads (0: all cores).
 RenderResult render_cpu(const FlatScene& flat, int threads = 0, const StopRule& stop = {});
 
+// The sample count every pixel of `r` holds, or -1 when they differ (the stop rules stop
+// between passes only, so every pixel must hold the same).
+int common_sample_count(const RenderResult& r);
+
 // "cpu" or "cl", for test names and messages.
 const char* device_label(Device kind);
 
