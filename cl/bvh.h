@@ -161,29 +161,15 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       }
     } else {
       int first = RtLeafFirst(ref), end = first + RtLeafCount(ref);
-      for (int base = first; base < end; base += RT_BVH_WIDTH) {
-        TriangleLanes lanes;
-        LaneInt candidates =
-            IntersectTriangleLanes(&tr, &sd->triangles[base], end - base, tmax, cull, &lanes);
-        if (!LaneAny(candidates)) continue;
-        // The few lanes left finish one by one, in order, as the scalar loop would.
-        int lane_candidate[RT_BVH_WIDTH];
-        real lane_v[RT_BVH_WIDTH], lane_w[RT_BVH_WIDTH], lane_det[RT_BVH_WIDTH];
-        real lane_tscaled[RT_BVH_WIDTH];
-        LaneStoreI(candidates, lane_candidate);
-        LaneStoreR(lanes.v, lane_v);
-        LaneStoreR(lanes.w, lane_w);
-        LaneStoreR(lanes.det, lane_det);
-        LaneStoreR(lanes.tscaled, lane_tscaled);
-        for (int i = 0; i < RT_BVH_WIDTH; ++i) {
-          real t, b1, b2;
-          if (lane_candidate[i] == 0 || !FinishTriangle(lane_v[i], lane_w[i], lane_det[i],
-                                                        lane_tscaled[i], tmax, &t, &b1, &b2))
-            continue;
+      for (int i = first; i < end; ++i) {
+        RT_GLOBAL const Triangle* tri = &sd->triangles[i];
+        real t, b1, b2;
+        if (IntersectTriangle(&tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull,
+                              &t, &b1, &b2)) {
           tmax = t;
           hit->t = t;
           hit->instance = instance;
-          hit->primitive = base + i;
+          hit->primitive = i;
           hit->b1 = b1;
           hit->b2 = b2;
           if (any_hit) return 1;

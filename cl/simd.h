@@ -13,18 +13,7 @@
 #define RT_BVH_WIDTH 4
 #endif
 
-// F(0), F(1), ... F(RT_BVH_WIDTH - 1): the elements of a vector built lane by lane.
-#if RT_BVH_WIDTH == 4
-#define RT_LANE_LIST(F) F(0), F(1), F(2), F(3)
-#else
-#define RT_LANE_LIST(F) F(0), F(1), F(2), F(3), F(4), F(5), F(6), F(7)
-#endif
-
 #ifdef __OPENCL_C_VERSION__
-
-#define LaneFloatOf(F) ((LaneFloat)(RT_LANE_LIST(F)))
-#define LaneAny(v) any(v)
-#define LaneIntOf(F) ((LaneInt)(RT_LANE_LIST(F)))
 
 #if RT_BVH_WIDTH == 4
 typedef float4 LaneFloat;
@@ -45,18 +34,8 @@ typedef int8 LaneInt;
 
 typedef float LaneFloat __attribute__((vector_size(4 * RT_BVH_WIDTH)));
 typedef int LaneInt __attribute__((vector_size(4 * RT_BVH_WIDTH)));
-#define LaneFloatOf(F) (LaneFloat{RT_LANE_LIST(F)})
-#define LaneIntOf(F) (LaneInt{RT_LANE_LIST(F)})
 inline void LaneStoreF(LaneFloat v, float* p) { std::memcpy(p, &v, sizeof v); }
 inline void LaneStoreI(LaneInt v, int* p) { std::memcpy(p, &v, sizeof v); }
-// 1 when any lane of a mask (-1 / 0 per lane) is set.
-inline int LaneAny(LaneInt v) {
-  int a[RT_BVH_WIDTH];
-  LaneStoreI(v, a);
-  int any = 0;
-  for (int i = 0; i < RT_BVH_WIDTH; ++i) any |= a[i];
-  return any != 0;
-}
 // Whole nodes on cache lines; OpenCL buffers are aligned at least as well.
 #define RT_ALIGN_NODE alignas(64)
 

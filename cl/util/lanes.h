@@ -9,23 +9,19 @@
 #include "../simd.h"
 #include "real.h"
 
-// LaneMask is what comparing two LaneReal gives (-1 / 0 per lane, lanes as wide as real's).
 #ifndef RT_REAL_DOUBLE
 typedef LaneFloat LaneReal;
-typedef LaneInt LaneMask;
 #define LaneToReal(v) (v)
 #define LaneStoreR(v, p) LaneStoreF((v), (p))
 #define LaneMaskToInt(m) (m)
 #elif defined(__OPENCL_C_VERSION__)
 #if RT_BVH_WIDTH == 4
 typedef double4 LaneReal;
-typedef long4 LaneMask;
 #define LaneToReal(v) convert_double4(v)
 #define LaneStoreR(v, p) vstore4((v), 0, (p))
 #define LaneMaskToInt(m) convert_int4(m)
 #else
 typedef double8 LaneReal;
-typedef long8 LaneMask;
 #define LaneToReal(v) convert_double8(v)
 #define LaneStoreR(v, p) vstore8((v), 0, (p))
 #define LaneMaskToInt(m) convert_int8(m)
@@ -35,7 +31,6 @@ typedef long8 LaneMask;
 // note that 32-byte vectors pass differently with and without AVX concerns no call here.
 #pragma GCC diagnostic ignored "-Wpsabi"
 typedef double LaneReal __attribute__((vector_size(8 * RT_BVH_WIDTH)));
-typedef long long LaneMask __attribute__((vector_size(8 * RT_BVH_WIDTH)));
 #define LaneToReal(v) __builtin_convertvector((v), LaneReal)
 inline void LaneStoreR(LaneReal v, double* p) { std::memcpy(p, &v, sizeof v); }
 // A comparison of double lanes yields 64-bit lanes of -1 / 0.
