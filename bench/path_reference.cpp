@@ -25,12 +25,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include "device/cpu_kernel.h"
+#include "block_subset.h"
 #include "flat_scene.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
@@ -39,6 +39,13 @@
 #include "render.h"
 
 namespace {
+
+using rt::bench::block_mae;
+using rt::bench::crop;
+using rt::bench::crop8;
+using rt::bench::encode;
+using rt::bench::mean_luminance;
+using rt::bench::Subset;
 
 struct Options {
   bool check = false;  // Test the render against the reference (exit status 1 on a miss).
@@ -75,103 +82,11 @@ std::string pair_partner(const std::string& name) {
 
 std::string stem(const std::string& file) { return file.substr(0, file.find_last_of('.')); }
 
-// Linear radiance of the pixels of the subset: 4x4 blocks whose block coordinates are
-// multiples of `stride`, packed into a compact image (rows of blocks).
-struct Subset {
-  int stride = 1, width = 0, height = 0;
-  int x(int col) const { return (col / 4) * stride * 4 + col % 4; }
-  int y(int row) const { return (row / 4) * stride * 4 + row % 4; }
-};
-
-Subset make_subset(const Camera& cam, int stride) {
-  Subset s;
-  s.stride = stride;
-  s.width = ((cam.width / 4 + stride - 1) / stride) * 4;
-  s.height = ((cam.height / 4 + stride - 1) / stride) * 4;
-  return s;
-}
-
-rt::ImageF render_subset(const rt::FlatScene& flat, const Subset& sub) {
-  const Camera& cam = flat.header.camera;
-  rt::ImageF out;
-  out.width = sub.width;
-  out.height = sub.height;
-  out.max_value = 0;
-  out.pixels.assign(out.size() * 3, 0.0f);
-  SceneData sd = flat.view();
-  std::vector<std::thread> pool;
-  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (int row = t; row < sub.height; row += threads)
-        for (int col = 0; col < sub.width; ++col) {
-          PixelAccum acc{};
-          PrimaryInfo info;
-          rt::accumulate_pixel_float(&sd, sub.x(col), sub.y(row), 0, cam.samples, &acc, &info);
-          float* o = &out.pixels[(static_cast<size_t>(row) * sub.width + col) * 3];
-          o[0] = acc.sum.x / acc.sum.w;
-          o[1] = acc.sum.y / acc.sum.w;
-          o[2] = acc.sum.z / acc.sum.w;
-        }
-    });
-  for (auto& th : pool) th.join();
-  return out;
-}
-
-rt::ImageF crop(const rt::ImageF& img, const Subset& sub) {
-  rt::ImageF out;
-  out.width = sub.width;
-  out.height = sub.height;
-  out.max_value = 0;
-  out.pixels.resize(out.size() * 3);
-  for (int row = 0; row < sub.height; ++row)
-    for (int col = 0; col < sub.width; ++col)
-      for (int k = 0; k < 3; ++k)
-        out.pixels[(static_cast<size_t>(row) * sub.width + col) * 3 + k] =
-            img.at(sub.x(col), sub.y(row), k);
-  return out;
-}
-
-rt::Image8 crop8(const rt::Image8& img, const Subset& sub) {
-  rt::Image8 out;
-  out.width = sub.width;
-  out.height = sub.height;
-  out.rgb.resize(static_cast<size_t>(sub.width) * sub.height * 3);
-  for (int row = 0; row < sub.height; ++row)
-    for (int col = 0; col < sub.width; ++col)
-      for (int k = 0; k < 3; ++k)
-        out.rgb[(static_cast<size_t>(row) * sub.width + col) * 3 + k] =
-            img.rgb[(static_cast<size_t>(sub.y(row)) * img.width + sub.x(col)) * 3 + k];
-  return out;
-}
-
-rt::Image8 encode(const rt::ImageF& img, const rt::PhotographicScale& s,
-                  const rt::PhotographicParams& p) {
-  rt::Image8 out;
-  out.width = img.width;
-  out.height = img.height;
-  out.rgb.resize(img.size() * 3);
-  for (size_t i = 0; i < img.size(); ++i)
-    rt::TonemapPixel(&img.pixels[i * 3], s, p, &out.rgb[i * 3]);
-  return out;
-}
-
-double block_mae(const rt::Image8& a, const rt::Image8& b) {
-  return rt::diff_images(rt::downsample(a, 4), rt::downsample(b, 4)).mae;
-}
-
 double zero_percent(const rt::ImageF& img) {
   size_t zero = 0;
   for (size_t i = 0; i < img.size(); ++i)
     zero += img.pixels[i * 3] <= 0 && img.pixels[i * 3 + 1] <= 0 && img.pixels[i * 3 + 2] <= 0;
   return 100.0 * zero / std::max<size_t>(1, img.size());
-}
-
-double mean_luminance(const rt::ImageF& img) {
-  double sum = 0;
-  for (size_t i = 0; i < img.size(); ++i)
-    sum += rt::Luminance(img.pixels[i * 3], img.pixels[i * 3 + 1], img.pixels[i * 3 + 2]);
-  return sum / std::max<size_t>(1, img.size());
 }
 
 // --check: the render and the reference estimate the same image. Three criteria, each with
@@ -184,21 +99,7 @@ double mean_luminance(const rt::ImageF& img) {
 //  * the block MAE (reference's tone mapping) is at most 1.15 times the three-cornered-hat
 //    floor (the target), or 1.15 times the pair floor when the hat is undefined.
 bool check_render(const rt::ImageF& mine, const rt::ImageF& ref, double mae, double floor) {
-  int bw = mine.width / 4, bh = mine.height / 4;
-  std::vector<double> d;
-  for (int by = 0; by < bh; ++by)
-    for (int bx = 0; bx < bw; ++bx) {
-      double sum = 0;
-      for (int y = by * 4; y < by * 4 + 4; ++y)
-        for (int x = bx * 4; x < bx * 4 + 4; ++x)
-          sum += rt::Luminance(mine.at(x, y, 0), mine.at(x, y, 1), mine.at(x, y, 2)) -
-                 rt::Luminance(ref.at(x, y, 0), ref.at(x, y, 1), ref.at(x, y, 2));
-      d.push_back(sum / 16);
-    }
-  double mean = 0, var = 0;
-  for (double v : d) mean += v / d.size();
-  for (double v : d) var += (v - mean) * (v - mean) / (d.size() - 1);
-  double z = mean / std::sqrt(var / d.size());
+  double z = rt::bench::block_bias_z(mine, ref);
   double p = zero_percent(ref) / 100, dz = (zero_percent(mine) - zero_percent(ref)) / 100;
   double se_zero = std::sqrt(2 * p * (1 - p) / mine.size());
   bool ok_bias = std::fabs(z) <= 4, ok_zero = std::fabs(dz) <= 4.5 * se_zero + 1e-12;
@@ -237,16 +138,13 @@ int run(const std::string& scene_file, const std::string& refdir, const Options&
     }
     rt::set_camera(flat, scene, static_cast<int>(c), ro);
     const Camera& cam = flat.header.camera;
-    double total = static_cast<double>(cam.width) * cam.height * cam.samples;
-    int stride =
-        o.budget > 0 ? std::max(1, static_cast<int>(std::ceil(std::sqrt(total / o.budget)))) : 1;
-    Subset sub = make_subset(cam, stride);
+    Subset sub = rt::bench::make_subset(cam, o.budget);
     rt::ImageF ref = rt::read_exr(ref_exr), partner = rt::read_exr(par_exr);
     rt::Image8 ref8 = rt::read_png(ref_png), par8 = rt::read_png(par_png);
     const rt::PhotographicParams& tp = desc.tonemap_params;
     rt::PhotographicScale ref_scale = rt::PhotographicStatistics(ref, tp);
     auto start = std::chrono::steady_clock::now();
-    rt::ImageF mine = render_subset(flat, sub);
+    rt::ImageF mine = rt::bench::render_subset(flat, sub);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     rt::Image8 ref_sub = crop8(ref8, sub), par_sub = crop8(par8, sub);
@@ -275,7 +173,7 @@ int run(const std::string& scene_file, const std::string& refdir, const Options&
     std::printf(
         "%-30s %4d %5.1f%% %6.4f %5.1f %5.1f | %6.2f %6.2f %6.2f %5.2f %5.2f | %6.2f %6.2f "
         "%6.2f %5.2f | %6.1f\n",
-        name.c_str(), cam.samples, 100.0 / (stride * stride),
+        name.c_str(), cam.samples, 100.0 / (sub.stride * sub.stride),
         mean_luminance(mine) / mean_luminance(ref_lin), zero_percent(mine), zero_percent(ref_lin),
         mae, floor_pair, floor_hat, mae / floor_pair, mae / floor_hat, mae_rs, floor_rs, hat_rs,
         mae_rs / hat_rs, seconds);
@@ -317,6 +215,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "path_reference: unknown option %s\n", k.c_str());
       return 2;
     }
+  }
+  // As a test (--check), a clone without the course's scenes beside it skips, saying why.
+  if (o.check && !std::filesystem::exists(argv[1])) {
+    std::printf("SKIP: %s is not here (the course's scenes, ../shared)\n", argv[1]);
+    return 77;
   }
   try {
     return run(argv[1], argv[2], o);

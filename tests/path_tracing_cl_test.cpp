@@ -1,5 +1,5 @@
 // The path tracer on the OpenCL device against the CPU reference at equal seeds: the same
-// paths and the same per-pixel sums, bit for bit (sampling uses util/trig.h's functions,
+// paths and the same per-pixel sums, bit for bit (sampling uses util/transcendental.h's functions,
 // not the libraries', whose last bits differ between devices).
 #include <gtest/gtest.h>
 

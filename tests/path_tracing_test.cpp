@@ -16,20 +16,15 @@
 #include "errors.h"
 #include "flat_scene.h"
 #include "support/device_harness.h"
+#include "support/pixel_estimate.h"
 #include "support/test_scene.h"
 
 namespace {
 
-// A normalized Lambertian (the hw6 ModifiedPhong, normalized, without its lobe): f = a / pi.
-Material Lambert(double a) {
-  Material m{};
-  m.diffuse = make_float3(a, a, a);
-  m.phong_exponent = 1;
-  m.refraction_index = 1;
-  m.brdf = RT_BRDF_MODIFIED_PHONG;
-  m.brdf_flags = RT_BRDF_NORMALIZED;
-  return m;
-}
+using rt::test::ExpectMean;
+using rt::test::Lambert;
+using rt::test::PixelStats;
+using rt::test::RenderOnePixel;
 
 // The shared point camera (tests/support/test_scene.h), rendering with the path tracer.
 rt::CameraDesc PointCamera(rt::Vec3d eye, int samples, int path_flags) {
@@ -44,28 +39,6 @@ rt::ObjectDesc Sphere(double radius) {
   o.kind = rt::ObjectDesc::kSphere;
   o.transform = rt::Mat4::scaling({radius, radius, radius});
   return o;
-}
-
-struct PixelStats {
-  double mean, standard_error;
-};
-
-PixelStats RenderOnePixel(const rt::SceneDesc& scene, const rt::RenderOptions& opt = {}) {
-  rt::FlatScene flat = rt::flatten_scene(scene, opt);
-  rt::set_camera(flat, scene, 0, opt);
-  rt::RenderResult r = rt::test::render_cpu(flat);
-  const PixelAccum& a = r.accum[0];
-  EXPECT_EQ(a.nonfinite, 0u);
-  double n = a.sum_sq.w, mean = a.sum.x / a.sum.w;
-  double var = (a.sum_sq.x / n - mean * mean) * n / (n - 1);
-  return {mean, std::sqrt(std::max(var, 0.0) / n)};
-}
-
-void ExpectMean(const PixelStats& s, double expected, const std::string& what) {
-  double tolerance = 4.5 * s.standard_error + 2e-4 * std::fabs(expected);
-  EXPECT_NEAR(s.mean, expected, tolerance)
-      << what << ": standard error " << s.standard_error << " ("
-      << (s.mean - expected) / std::max(s.standard_error, 1e-30) << " of them)";
 }
 
 // The light furnace: a point light of intensity I at the centre of a closed sphere of
@@ -115,8 +88,7 @@ TEST(PathTracing, UnbiasedRouletteMatchesTheUntruncatedSeries) {
     // The same mean as without roulette at a depth whose truncation is below 1e-9.
     PixelStats deep = RenderOnePixel(LightFurnace(30, 20000, RT_FLAG_NEXT_EVENT | importance));
     ExpectMean(deep, infinite, "depth 30, " + what);
-    double se = std::hypot(rr.standard_error, deep.standard_error);
-    EXPECT_NEAR(rr.mean, deep.mean, 4.5 * se + 2e-4 * infinite) << what;
+    rt::test::ExpectSameMean(rr, deep, what);
   }
 }
 

@@ -27,31 +27,6 @@ void ExpectNear(float3 a, float3 b, float tol) {
   EXPECT_NEAR(a.z, b.z, tol);
 }
 
-// ---- Inverse trigonometry ----
-
-TEST(TextureTrig, Atan2AgreesWithTheLibraryWithinFourUlps) {
-  for (int i = 0; i < 20000; ++i) {
-    float a = -3.3f + 6.6f * static_cast<float>(i) / 20000.0f;
-    for (float r : {1e-3f, 0.7f, 1.0f, 250.0f}) {
-      float x = r * std::cos(a), y = r * std::sin(a);
-      float ours = Atan2F(y, x), lib = std::atan2(y, x);
-      EXPECT_NEAR(ours, lib, 4.0f * 1.2e-7f * std::fabs(lib) + 1e-30f)
-          << "atan2(" << y << ", " << x << ")";
-    }
-  }
-}
-
-TEST(TextureTrig, ExactAtTheAxes) {
-  EXPECT_EQ(Atan2F(0.0f, 1.0f), 0.0f);
-  EXPECT_EQ(Atan2F(1.0f, 0.0f), RT_PI * 0.5f);
-  EXPECT_EQ(Atan2F(0.0f, -1.0f), RT_PI);
-  EXPECT_EQ(Atan2F(-1.0f, 0.0f), -RT_PI * 0.5f);
-  EXPECT_EQ(AcosF(1.0f), 0.0f);
-  EXPECT_EQ(AcosF(0.0f), RT_PI * 0.5f);
-  EXPECT_EQ(AcosF(-1.0f), RT_PI);
-  EXPECT_EQ(AcosF(1.5f), 0.0f);  // Clamped: rounding may push a unit vector past 1.
-}
-
 // ---- Sphere coordinates (the course's: u = (pi - phi) / 2pi, v = theta / pi) ----
 
 TEST(TextureSphere, CoordinatesAtTheAxes) {

@@ -37,8 +37,8 @@ RULES = [
     (re.compile(r"\b(fmin|fmax)\((-?[0-9]+\.[0-9]*)f\s*,"), r"\1(RT_R(\2),"),
     (re.compile(r"\b(fmin|fmax)(\([^(),]*(?:\([^()]*\)[^(),]*)*),\s*(-?[0-9]+\.[0-9]*)f\)"),
      r"\1\2, RT_R(\3))"),
-    # Library exp/pow/sin/cos round differently on PoCL and glibc in double; the versions of
-    # cl/util/transcendental.h are the library's in float and exactly reproducible in double.
+    # Library exp/pow/sin/cos round differently on PoCL and glibc in double; ExpR..CosR of
+    # cl/util/transcendental.h are the library's in float and its portable ones in double.
     (re.compile(r"\bexp\("), "ExpR("),
     (re.compile(r"\bpow\("), "PowR("),
     (re.compile(r"\bsin\("), "SinR("),

@@ -29,11 +29,7 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
   stack.size = 0;
   PushRay(&stack, MakeTask(camera_ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0));
   real3 radiance = Vec3(0.0f);
-  Hit none;
-  none.t = RT_INFINITY;
-  none.instance = -1;
-  none.primitive = -1;
-  RecordPrimaryHit(info, none, Vec3(0.0f));
+  RecordPrimaryMiss(info);
   while (stack.size > 0) {
     RayTask task = PopRay(&stack);
     Hit hit;

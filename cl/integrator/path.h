@@ -135,6 +135,7 @@ RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_
   p.bounce = 0;
   p.inside = 0;
   p.specular = 1;
+  RecordPrimaryMiss(info);
   for (;;) {
     Hit hit;
     *rays += 1u;

@@ -14,4 +14,13 @@ RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, real3 nor
   info->normal = ToFloat3(normal);
 }
 
+// A camera ray that hits nothing, recorded before tracing so that a miss is recorded too.
+RT_DEVICE void RecordPrimaryMiss(RT_PRIVATE PrimaryInfo* info) {
+  Hit none;
+  none.t = RT_INFINITY;
+  none.instance = -1;
+  none.primitive = -1;
+  RecordPrimaryHit(info, none, Vec3(0.0f));
+}
+
 #endif

@@ -55,12 +55,8 @@ RT_DEVICE real EnvironmentPdf(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Li
 RT_DEVICE real3 SampleHemisphere(real3 n, real2 u, int cosine, RT_PRIVATE real* pdf) {
   real z = cosine ? sqrt(1.0f - u.x) : u.x;
   real r = sqrt(MaxF(0.0f, 1.0f - z * z));
-  real s, c;
-  SinCos2Pi(u.y, &s, &c);
-  real3 t, b;
-  CoordinateSystem(n, &t, &b);
   *pdf = cosine ? z * (1.0f / RT_PI) : 0.5f / RT_PI;
-  return t * (r * c) + b * (r * s) + n * z;
+  return SphericalDirection(n, r, z, u.y);
 }
 
 RT_DEVICE LightSample SampleEnvironmentLight(RT_PRIVATE const SceneData* sd,

@@ -10,7 +10,7 @@
 #define RT_LIGHT_ENVIRONMENT_MAP_H
 
 #include "../util/math.h"
-#include "../util/trig.h"
+#include "../util/transcendental.h"
 
 // Mappings (the light's `type` attribute).
 // Latitude-longitude, hw5/SPEC.txt: u = (1 + atan2(x, -z) / pi) / 2, v = acos(y) / pi.
@@ -32,10 +32,10 @@ RT_DEVICE real2 EnvDirectionToUV(int mapping, real3 d) {
     real len = sqrt(d.x * d.x + d.y * d.y);
     // Straight ahead is the centre; straight behind is anywhere on the rim (its right end).
     if (len == 0.0f) return make_real2(d.z <= 0.0f ? 0.5f : 1.0f, 0.5f);
-    real r = AcosF(-d.z) / (RT_PI * len);
+    real r = SafeACos(-d.z) / (RT_PI * len);
     return make_real2(0.5f * (1.0f + r * d.x), 0.5f * (1.0f - r * d.y));
   }
-  return make_real2(0.5f * (1.0f + Atan2F(d.x, -d.z) / RT_PI), AcosF(d.y) / RT_PI);
+  return make_real2(0.5f * (1.0f + Atan2(d.x, -d.z) / RT_PI), SafeACos(d.y) / RT_PI);
 }
 
 // The unit direction at map coordinates uv, and in *jacobian the solid angle per unit of

@@ -13,7 +13,7 @@
 
 #include "../ray.h"
 #include "../transform.h"
-#include "../util/trig.h"
+#include "../util/math.h"
 #include "light_sample.h"
 
 // 1 - cos of the half-angle of the cone from a point to a sphere, from sin^2 of it, in the
@@ -61,12 +61,8 @@ RT_DEVICE LightSample SampleSphereLight(RT_PRIVATE const SceneData* sd,
   // The angle at the centre between the axis to pc and the sampled point.
   real cos_a = sin2 / sin_max + cos_t * sqrt(MaxF(0.0f, 1.0f - sin2 / sin2_max));
   real sin_a = sqrt(MaxF(0.0f, 1.0f - cos_a * cos_a));
-  real sin_phi, cos_phi;
-  SinCos2Pi(u.y, &sin_phi, &cos_phi);
   real3 axis = pc * (1.0f / sqrt(dc2));  // From the centre towards pc.
-  real3 t1, t2;
-  CoordinateSystem(axis, &t1, &t2);
-  real3 n = t1 * (sin_a * cos_phi) + t2 * (sin_a * sin_phi) + axis * cos_a;
+  real3 n = SphericalDirection(axis, sin_a, cos_a, u.y);
   real3 q = TransformPoint(inst->object_to_world, n);
   ls = LightSampleTowards(ctx->p, q, ToReal3(light->emission));
   ls.pdf = SphereLightPdfAt(light, inst, pc, n, ctx->p, q);

@@ -24,8 +24,8 @@
 #ifndef RT_BRDF_H
 #define RT_BRDF_H
 
-#include "../util/trig.h"  // SinCos2Pi, PowUnit.
-#include "fresnel.h"       // FrConductor.
+#include "../util/transcendental.h"  // Pow.
+#include "fresnel.h"                 // FrConductor.
 
 #define RT_BRDF_ORIGINAL_BLINN_PHONG 0
 #define RT_BRDF_ORIGINAL_PHONG 1
@@ -103,16 +103,13 @@ RT_DEVICE real CosineLobePdf(real cos_a, real e) {
 }
 
 // A direction of the cos^e lobe around unit axis `a` from u in [0, 1)^2. The root and the
-// angle come from util/trig.h, not the libraries, so both devices draw the same direction.
+// angle come from util/transcendental.h, not the libraries, so both devices draw the same
+// direction.
 RT_DEVICE real3 SampleCosineLobe(real3 a, real e, real2 u) {
   // 1 - u keeps cos_t > 0; e = 1 is the cosine-weighted hemisphere.
-  real cos_t = e == 1.0f ? sqrt(1.0f - u.x) : PowUnit(1.0f - u.x, 1.0f / (e + 1.0f));
+  real cos_t = e == 1.0f ? sqrt(1.0f - u.x) : Pow(1.0f - u.x, 1.0f / (e + 1.0f));
   real sin_t = sqrt(fmax(RT_R(0.0), 1.0f - cos_t * cos_t));
-  real sin_phi, cos_phi;
-  SinCos2Pi(u.y, &sin_phi, &cos_phi);
-  real3 s, t;
-  CoordinateSystem(a, &s, &t);
-  return s * (sin_t * cos_phi) + t * (sin_t * sin_phi) + a * cos_t;
+  return SphericalDirection(a, sin_t, cos_t, u.y);
 }
 
 // Solid-angle density of BrdfSample choosing wi.

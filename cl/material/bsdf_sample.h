@@ -65,11 +65,7 @@ RT_DEVICE BsdfSample SpecularBsdfSample(real3 wi, real3 weight, int transmit) {
 RT_DEVICE real3 SampleUniformHemisphere(real3 n, real2 u) {
   real cos_t = 1.0f - u.x;  // In (0, 1]: never grazing.
   real sin_t = sqrt(fmax(RT_R(0.0), 1.0f - cos_t * cos_t));
-  real sin_phi, cos_phi;
-  SinCos2Pi(u.y, &sin_phi, &cos_phi);  // Not the library's: see util/trig.h.
-  real3 s, t;
-  CoordinateSystem(n, &s, &t);
-  return s * (sin_t * cos_phi) + t * (sin_t * sin_phi) + n * cos_t;
+  return SphericalDirection(n, sin_t, cos_t, u.y);
 }
 
 // A direction for the reflection model at s (whose normals face s->wo) and its

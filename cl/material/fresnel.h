@@ -4,7 +4,7 @@
 #define RT_MATERIAL_FRESNEL_H
 
 #include "../util/math.h"
-#include "../util/trig.h"
+#include "../util/transcendental.h"
 
 // Unpolarized Fresnel reflectance of a dielectric interface for light going from index
 // eta_i to eta_t; cos_i > 0 is the cosine on the incident side. Total internal
@@ -48,12 +48,12 @@ RT_DEVICE real3 BeerLambert(real3 absorption, real distance) {
   return Exp3(absorption * (-distance));
 }
 
-// The same with util/trig.h's exponential, which both devices round alike: the path
+// The same with util/transcendental.h's exponential, which both devices round alike: the path
 // tracer's weights decide where paths go (roulette), so they must agree to the bit. The
 // ray tree keeps the library's, so that its images stay as they were.
 RT_DEVICE real3 BeerLambertPortable(real3 absorption, real distance) {
   real3 a = absorption * (-distance);
-  return make_real3(ExpF(a.x), ExpF(a.y), ExpF(a.z));
+  return make_real3(Exp(a.x), Exp(a.y), Exp(a.z));
 }
 
 #endif  // RT_MATERIAL_FRESNEL_H

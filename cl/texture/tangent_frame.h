@@ -4,7 +4,7 @@
 #ifndef RT_TANGENT_FRAME_H
 #define RT_TANGENT_FRAME_H
 
-#include "../util/trig.h"
+#include "../util/transcendental.h"
 #include "texture_types.h"
 
 typedef struct TextureFrame {
@@ -18,8 +18,8 @@ typedef struct TextureFrame {
 // theta = acos(y) from the north pole, phi = atan2(z, x); u = (pi - phi) / (2 pi) and
 // v = theta / pi, so v = 0 at the top of the image.
 RT_DEVICE real2 SphereUV(real3 p) {
-  real theta = AcosF(p.y);
-  real phi = Atan2F(p.z, p.x);
+  real theta = SafeACos(p.y);
+  real phi = Atan2(p.z, p.x);
   return make_real2((RT_PI - phi) / (2.0f * RT_PI), theta / RT_PI);
 }
 

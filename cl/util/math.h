@@ -7,7 +7,6 @@
 #include "real.h"
 #include "transcendental.h"
 
-#define RT_PI RT_R(3.14159265358979323846)
 #define RT_INFINITY 3.402823466e+38f
 
 // Plain comparisons rather than fmin/fmax: they compile to single min/max instructions on
@@ -71,6 +70,17 @@ RT_DEVICE void CoordinateSystem(real3 n, RT_PRIVATE real3* u, RT_PRIVATE real3* 
   real b = n.x * n.y * a;
   *u = make_real3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
   *v = make_real3(b, sign + n.y * n.y * a, -n.y);
+}
+
+// The unit direction at polar angle theta from unit `axis` (given as its sine and cosine)
+// and azimuth 2 pi u_phi, around the basis above: the last step of every sampling of a
+// cone, lobe or hemisphere (pbrt's SphericalDirection in the axis's frame).
+RT_DEVICE real3 SphericalDirection(real3 axis, real sin_theta, real cos_theta, real u_phi) {
+  real sin_phi, cos_phi;
+  SinCos2Pi(u_phi, &sin_phi, &cos_phi);
+  real3 s, t;
+  CoordinateSystem(axis, &s, &t);
+  return s * (sin_theta * cos_phi) + t * (sin_theta * sin_phi) + axis * cos_theta;
 }
 
 RT_DEVICE real3 Reflect(real3 wo, real3 n) { return n * (2.0f * Dot(wo, n)) - wo; }
