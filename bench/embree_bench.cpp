@@ -228,6 +228,9 @@ RTCDevice NewDevice(int threads) {
 
 int TraceComparison(const Args& a, const rt::SceneDesc& desc, rt::RenderOptions opt) {
   opt.spp = a.spp;
+  // World-space rays and triangles, as Embree's scene holds them (the renderer's default
+  // frame is relative to the camera, whose rays would all miss Embree's geometry).
+  opt.camera_frame = false;
   rt::FlatScene flat = rt::flatten_scene(desc, opt);
   rt::set_camera(flat, desc, a.camera, opt);
   RaySet set = CameraRays(flat);

@@ -116,7 +116,7 @@ std::vector<Config> Grid(bool has_cl, bool dielectric) {
   fast.fast_math = true;
   add("math", "-cl-fast-relaxed-math", "cl", fast);
   rt::RenderOptions in_double = base;
-  in_double.double_precision = true;
+  in_double.precision = rt::Precision::kDouble;
   add("precision", "--precision double", "cpu", in_double);
   add("precision", "--precision double", "cl", in_double);
   for (auto [bins, leaf] :

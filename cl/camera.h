@@ -52,7 +52,39 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real px, real py
   return ray;
 }
 
-// Camera sample `sample` of pixel (x, y): its key (every later random number of the sample
+// What every camera sample of pixel (x, y) shares, computed once per pixel: the pixel's
+// part of the sample keys and the stratum permutations of the camera's dimensions.
+typedef struct CameraPixel {
+  int x, y;
+  // The pixel's place on the film, (x, y) / resolution: the background image is stretched
+  // over the film, and with the bilinear lookup's convention (texture/image_texture.h) an
+  // image of the film's size is reproduced texel for texel, as in the course's galactica images.
+  real2 uv;
+  PixelKey key;
+  uint film_strata, lens_strata, time_strata;  // StratumKey* of RT_DIM_PIXEL, _LENS, _TIME.
+} CameraPixel;
+
+RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int y) {
+  RT_GLOBAL const SceneHeader* h = sd->header;
+  RT_GLOBAL const Camera* cam = &h->camera;
+  CameraPixel cp;
+  cp.x = x;
+  cp.y = y;
+  cp.uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
+  cp.key = MakePixelKey((uint)(y * cam->width + x), (uint)cam->samples, (uint)cam->strata, h->seed);
+  cp.film_strata = cp.lens_strata = cp.time_strata = 0u;
+  if (cam->strata != 0) {
+    if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1)
+      cp.film_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_PIXEL, RT_STRATA_SALT_2D);
+    if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD))
+      cp.lens_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_LENS, RT_STRATA_SALT_2D);
+  }
+  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && cam->samples > 1)
+    cp.time_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_TIME, RT_STRATA_SALT_1D);
+  return cp;
+}
+
+// Camera sample `sample` of a pixel: its key (every later random number of the sample
 // derives from it), its film position within the pixel (for the reconstruction filter)
 // and its ray. The renderer and bench/embree_bench.cpp take their camera rays from here.
 typedef struct CameraSample {
@@ -61,22 +93,28 @@ typedef struct CameraSample {
   Ray ray;
 } CameraSample;
 
-RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int x, int y,
-                                            uint sample) {
-  RT_GLOBAL const SceneHeader* h = sd->header;
-  RT_GLOBAL const Camera* cam = &h->camera;
+RT_DEVICE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
+                                           RT_PRIVATE const CameraPixel* cp, uint sample) {
+  RT_GLOBAL const Camera* cam = &sd->header->camera;
   CameraSample cs;
-  cs.key = MakeSampleKey((uint)(y * cam->width + x), sample, (uint)cam->samples, (uint)cam->strata,
-                         h->seed);
+  cs.key = PixelSampleKey(cp->key, sample);
   cs.film = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1)
-    cs.film = Stratified2D(cs.key, RT_DIM_PIXEL);
+    cs.film = Stratified2DKeyed(cs.key, RT_DIM_PIXEL, cp->film_strata);
   real2 lens = make_real2(0.5f, 0.5f);
-  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)) lens = Stratified2D(cs.key, RT_DIM_LENS);
+  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD))
+    lens = Stratified2DKeyed(cs.key, RT_DIM_LENS, cp->lens_strata);
   real time = 0.0f;
-  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR)) time = Stratified1D(cs.key, RT_DIM_TIME);
-  cs.ray = GenerateCameraRay(sd, (real)x + cs.film.x, (real)y + cs.film.y, lens, time);
+  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR))
+    time = Stratified1DKeyed(cs.key, RT_DIM_TIME, cp->time_strata);
+  cs.ray = GenerateCameraRay(sd, (real)cp->x + cs.film.x, (real)cp->y + cs.film.y, lens, time);
   return cs;
+}
+
+RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int x, int y,
+                                            uint sample) {
+  CameraPixel cp = MakeCameraPixel(sd, x, y);
+  return GeneratePixelSample(sd, &cp, sample);
 }
 
 #endif  // RT_CAMERA_H

@@ -23,6 +23,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 // Live in CPU debug builds (the tests' and developers' build), empty in release builds
 // (NDEBUG) and in the kernel, so a check costs nothing where speed matters.
@@ -33,6 +34,13 @@
 #define RT_PRIVATE
 
 typedef std::uint32_t uint;
+
+// OpenCL's as_float: the float whose bits are u (HDR texels are stored as such bits).
+inline float as_float(uint u) {
+  float f;
+  std::memcpy(&f, &u, sizeof f);
+  return f;
+}
 
 // Same size and alignment as OpenCL's float3 (16 bytes), so buffers match byte for byte.
 struct alignas(16) float3 {

@@ -20,10 +20,11 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
                                RT_GLOBAL PixelAccum* acc, RT_GLOBAL PrimaryInfo* primary) {
   PixelAccum a = *acc;
   uint rays = 0u;
+  CameraPixel cp = MakeCameraPixel(sd, x, y);
   for (int s = begin; s < end; ++s) {
     real w;
     PrimaryInfo info;
-    real3 l = RenderSample(sd, x, y, (uint)s, &w, &info, &rays);
+    real3 l = RenderSample(sd, &cp, (uint)s, &w, s == 0 ? &info : 0, &rays);
     if (s == 0) *primary = info;
     if (!isfinite(l.x) || !isfinite(l.y) || !isfinite(l.z)) {
       // Counted, so --stats and the tests can fail on it, but kept off the film.

@@ -16,7 +16,7 @@
 #define RT_DIM_FIRST_FREE 5
 
 typedef struct SampleKey {
-  uint pixel;
+  uint pixel_hash;  // HashUint(pixel), the first round of every key of the pixel.
   uint sample;
   uint samples;  // Samples per pixel.
   uint strata;   // sqrt(samples) when a perfect square, else 0.
@@ -24,15 +24,38 @@ typedef struct SampleKey {
   uint prefix;  // Hash of (pixel, sample, seed): each dimension then costs one round.
 } SampleKey;
 
-RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint strata, uint seed) {
+// The part of the key every sample of a pixel shares, hashed once per pixel: a sample's
+// key then costs three rounds instead of four.
+typedef struct PixelKey {
+  uint samples;
+  uint strata;
+  uint seed;
+  uint hash;  // HashUint(pixel), the first round of every sample's prefix.
+} PixelKey;
+
+RT_DEVICE PixelKey MakePixelKey(uint pixel, uint samples, uint strata, uint seed) {
+  PixelKey p;
+  p.samples = samples;
+  p.strata = strata;
+  p.seed = seed;
+  p.hash = HashUint(pixel);
+  return p;
+}
+
+// Sample `sample` of the pixel; the prefix is Hash4(pixel, sample, seed, 0x3c6ef372u).
+RT_DEVICE SampleKey PixelSampleKey(PixelKey p, uint sample) {
   SampleKey k;
-  k.pixel = pixel;
+  k.pixel_hash = p.hash;
   k.sample = sample;
-  k.samples = samples;
-  k.strata = strata;
-  k.seed = seed;
-  k.prefix = Hash4(pixel, sample, seed, 0x3c6ef372u);
+  k.samples = p.samples;
+  k.strata = p.strata;
+  k.seed = p.seed;
+  k.prefix = HashCombine(HashCombine(HashCombine(p.hash, sample), p.seed), 0x3c6ef372u);
   return k;
+}
+
+RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint strata, uint seed) {
+  return PixelSampleKey(MakePixelKey(pixel, samples, strata, seed), sample);
 }
 
 RT_DEVICE real Random1D(SampleKey k, uint dimension) {
@@ -43,25 +66,48 @@ RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
   return make_real2(Random1D(k, dimension), Random1D(k, dimension ^ 0x68bc21ebu));
 }
 
-// One point of a jittered n x n pattern per sample, in [0, 1)^2; random when the sample
-// count is not a perfect square.
-RT_DEVICE real2 Stratified2D(SampleKey k, uint dimension) {
+// The keys of the stratum permutations, Hash4(pixel, dimension, seed, salt): one per pixel
+// and dimension, the same for every sample of the pixel (the camera's are computed once
+// per pixel, see cl/camera.h).
+RT_DEVICE uint StratumKey(uint pixel_hash, uint seed, uint dimension, uint salt) {
+  return HashCombine(HashCombine(HashCombine(pixel_hash, dimension), seed), salt);
+}
+
+#define RT_STRATA_SALT_2D 0x51ed2701u
+#define RT_STRATA_SALT_1D 0x2c1b3c6du
+
+// One point of a jittered n x n pattern per sample, in [0, 1)^2, its stratum permuted by
+// `stratum_key` (StratumKey of the dimension); random when the sample count is not a
+// perfect square.
+RT_DEVICE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint stratum_key) {
   real2 xi = Random2D(k, dimension);
   if (k.strata == 0u) return xi;
-  uint key = Hash4(k.pixel, dimension, k.seed, 0x51ed2701u);
-  uint stratum = PermutationElement(k.sample, k.samples, key);
+  uint stratum = PermutationElement(k.sample, k.samples, stratum_key);
   real inv = 1.0f / (real)k.strata;
   return make_real2(((real)(stratum % k.strata) + xi.x) * inv,
                     ((real)(stratum / k.strata) + xi.y) * inv);
 }
 
+RT_DEVICE real2 Stratified2D(SampleKey k, uint dimension) {
+  return k.strata == 0u
+             ? Random2D(k, dimension)
+             : Stratified2DKeyed(k, dimension,
+                                 StratumKey(k.pixel_hash, k.seed, dimension, RT_STRATA_SALT_2D));
+}
+
 // A jittered 1D pattern of `samples` strata (for the shutter time).
-RT_DEVICE real Stratified1D(SampleKey k, uint dimension) {
+RT_DEVICE real Stratified1DKeyed(SampleKey k, uint dimension, uint stratum_key) {
   real xi = Random1D(k, dimension);
   if (k.samples <= 1u) return xi;
-  uint key = Hash4(k.pixel, dimension, k.seed, 0x2c1b3c6du);
-  uint stratum = PermutationElement(k.sample, k.samples, key);
+  uint stratum = PermutationElement(k.sample, k.samples, stratum_key);
   return ((real)stratum + xi) / (real)k.samples;
+}
+
+RT_DEVICE real Stratified1D(SampleKey k, uint dimension) {
+  return k.samples <= 1u
+             ? Random1D(k, dimension)
+             : Stratified1DKeyed(k, dimension,
+                                 StratumKey(k.pixel_hash, k.seed, dimension, RT_STRATA_SALT_1D));
 }
 
 // The random numbers of one ray of the ray tree: its pixel sample, its key in the tree

@@ -154,6 +154,9 @@ typedef struct TriangleNormals {
 #define RT_FLAG_RUSSIAN_ROULETTE 128     // RussianRoulette: end paths by their throughput.
 // --russian-roulette unbiased: a path the roulette ends drops its last vertex's light.
 #define RT_FLAG_UNBIASED_ROULETTE 256
+// --reflection-offset facing: a mirror or conductor seen from behind reflects from the side
+// the ray came from, not from the side of its normal as modelled (cl/material/mirror.h).
+#define RT_FLAG_FACING_REFLECTION 512
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \

@@ -50,15 +50,25 @@ OptionTable<RenderOptions> make_device_table() {
       .flag("--background-on-secondary-miss", RT_FIELD(background_on_secondary_miss),
             "reflected and refracted rays that escape see BackgroundColor (otherwise black; "
             "camera rays always see it)")
+      .choice("--reflection-offset",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"facing", true}},
+              RT_FIELD(facing_reflection),
+              "where a mirror's or conductor's reflected ray starts when the surface is seen "
+              "from behind: course: on the side of the normal as modelled, as the course's "
+              "renderer (the ray meets the surface again; hw2 grass_desert needs it); facing: "
+              "on the viewer's side")
       .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)
       .choice("--precision",
-              std::vector<std::pair<std::string, bool>>{{"float", false}, {"double", true}},
-              RT_FIELD(double_precision),
+              std::vector<std::pair<std::string, Precision>>{{"float", Precision::kFloat},
+                                                             {"double", Precision::kDouble},
+                                                             {"auto", Precision::kAuto}},
+              RT_FIELD(precision),
               "arithmetic of the shared math on both devices: double is exact to far smaller "
               "distances and costs time (README: precision); scene arrays stay float; an "
-              "OpenCL device without cl_khr_fp64 refuses double")
+              "OpenCL device without cl_khr_fp64 refuses double; auto: double where the "
+              "device has it (always on the CPU reference), else float with a notice")
       .flag("--fast-math", RT_FIELD(fast_math),
             "OpenCL: build with -cl-fast-relaxed-math (faster, less exact; the CPU reference "
             "is always precise)");

@@ -19,7 +19,7 @@ static_assert(sizeof(Camera) == 112, "Camera layout");
 static_assert(sizeof(Instance) == 144, "Instance layout");
 static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
 static_assert(sizeof(SceneHeader) == 208, "SceneHeader layout");
-static_assert(sizeof(TextureDesc) == 80, "TextureDesc layout");
+static_assert(sizeof(TextureDesc) == 96, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
 static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
 
@@ -147,9 +147,12 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0) |
             (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0) |
             (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
-            (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0);
+            (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
+            (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0);
   f.fast_math = options.fast_math;
-  f.double_precision = options.double_precision;
+  if (options.precision == Precision::kAuto)
+    throw std::logic_error("--precision auto reached flatten_scene unresolved (resolve_precision)");
+  f.double_precision = options.precision == Precision::kDouble;
   f.stats.bvh_build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return f;
@@ -166,6 +169,9 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
   Vec3d w = normalize(c.gaze) * -1.0;
   Vec3d u = normalize(cross(c.up, w));
   Vec3d v = cross(w, u);
+  // A left-handed camera (the two public CENG795 renderers that read the attribute agree)
+  // keeps v and w and reverses u: the same rays, mirrored left to right on the film.
+  if (c.left_handed) u = u * -1.0;
   cam.position = to_float3(c.position - origin);  // The frame's origin by default.
   cam.u = to_float3(u);
   cam.v = to_float3(v);

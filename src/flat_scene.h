@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bvh_build.h"
+#include "precision.h"
 #include "scene.h"
 #include "util/page_aligned.h"
 
@@ -29,11 +30,14 @@ struct RenderOptions {
   bool fresnel_choice = false;          // Dielectrics: pick one ray by Fresnel instead of both.
   bool unbiased_roulette = false;       // Path tracing: RussianRoulette without the course's bias.
   bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
+  bool facing_reflection = false;       // Not the course's reflection offset (mirror.h).
   bool fast_math = false;               // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.
   bool camera_frame = true;
-  bool double_precision = false;  // Computation in double (cl/util/real.h); storage stays float.
+  // Computation in double or float (cl/util/real.h); storage stays float. kAuto must be
+  // resolved against the device (resolve_precision) before flatten_scene.
+  Precision precision = Precision::kFloat;
   StopRule stop;
   BvhOptions bvh;
 };

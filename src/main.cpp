@@ -42,12 +42,19 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
                   std::unique_ptr<rt::RenderDevice>& device, bool last_scene) {
   const std::vector<int> cameras = rt::job_cameras(opt, s);
   if (cameras.empty()) return true;
-  rt::FlatScene flat = rt::flatten_scene(s.desc, opt.render);
-  if (!device) {
+  const bool new_device = !device;
+  if (new_device) {
     std::string notice;
     device = rt::create_device(rt::device_options(opt, 0, opt.threads), &notice);
     if (!notice.empty() && !opt.quiet) std::fprintf(stderr, "notice: %s\n", notice.c_str());
   }
+  rt::RenderOptions render = opt.render;
+  std::string notice;
+  render.precision =
+      rt::resolve_precision(render.precision, device->has_double(), device->name(), &notice);
+  if (new_device && !notice.empty() && !opt.quiet)
+    std::fprintf(stderr, "notice: %s\n", notice.c_str());
+  rt::FlatScene flat = rt::flatten_scene(s.desc, render);
   // Every image's memory is checked before the first render starts.
   for (int c : cameras) {
     try {

@@ -39,6 +39,9 @@ struct CameraDesc {
   int width = 0, height = 0;
   int samples = 1;
   double aperture = 0, focus_distance = 1;
+  // handedness="left" (hw5/head_env_light, ported from pbrt, whose LookAt is left-handed):
+  // the camera's right vector is up x gaze instead of gaze x up, which mirrors the image.
+  bool left_handed = false;
   // <Tonemap>: the film is written as HDR and tone mapped to the 8-bit image beside it.
   bool tonemap = false;
   PhotographicParams tonemap_params;

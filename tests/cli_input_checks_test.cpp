@@ -113,13 +113,11 @@ TEST_F(CliInputChecks, NameTooLongForTheFileSystemRefusedBeforeRendering) {
 
 TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
   const std::pair<const char*, const char*> cases[] = {
-      {"<Objects>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><Objects>"},
-      {"<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"},
-      {"<VertexData>", "<VertexData binaryFile=\"vertices.bin\">"},
+      {"</Objects>", "<LightMesh id=\"9\"><MotionBlur>1 0 0</MotionBlur></LightMesh></Objects>"},
       {"<ImageName>", "<Renderer>PhotonMapping</Renderer><ImageName>"},
   };
-  const char* names[] = {"ZeroBasedIndexing", "handedness", "binaryFile", "Renderer"};
-  for (int i = 0; i < 4; ++i) {
+  const char* names[] = {"MotionBlur", "Renderer"};
+  for (int i = 0; i < 2; ++i) {
     std::string scene = write("s.xml", replaced(kScene, cases[i].first, cases[i].second));
     Outcome r = render(scene);
     EXPECT_EQ(r.code, 1) << names[i];
@@ -129,6 +127,16 @@ TEST_F(CliInputChecks, UnsupportedFeaturesAreErrors) {
     EXPECT_NE(r.err.find("not supported"), std::string::npos) << r.err;
     EXPECT_TRUE(output_files().empty()) << names[i];
   }
+  // A missing binary vertex file: one line naming it, nothing written.
+  std::string missing = write(
+      "s.xml",
+      replaced(replaced(kScene, "<VertexData>", "<VertexData binaryFile=\"vertices.bin\"/><!--"),
+               "</VertexData>", "-->"));
+  Outcome m = render(missing);
+  EXPECT_EQ(m.code, 1);
+  expect_one_error_line(m);
+  EXPECT_NE(m.err.find("VertexData: binaryFile 'vertices.bin'"), std::string::npos) << m.err;
+  EXPECT_TRUE(output_files().empty());
   // An empty <Textures/> (older course files) changes nothing and is accepted silently.
   std::string scene =
       write("s.xml", replaced(kScene, "<Objects>", "<Textures>\n</Textures><Objects>"));

@@ -29,7 +29,7 @@ rt::FlatScene load(const Case& c, bool double_precision) {
   rt::SceneDesc scene = rt::load_scene(kScenes + c.scene);
   rt::RenderOptions opt;
   opt.spp = c.spp;
-  opt.double_precision = double_precision;
+  opt.precision = double_precision ? rt::Precision::kDouble : rt::Precision::kFloat;
   rt::FlatScene flat = rt::flatten_scene(scene, opt);
   rt::set_camera(flat, scene, 0, opt);
   flat.header.camera.width = c.size;

@@ -170,7 +170,11 @@ int main(int argc, char** argv) {
     rt::SceneDesc scene = rt::load_scene(files[0]);
     // RT_TEST_PRECISION=double reruns the reference tests in double (README: precision).
     const char* precision = std::getenv("RT_TEST_PRECISION");
-    if (precision && std::strcmp(precision, "double") == 0) a.render.double_precision = true;
+    if (precision && std::strcmp(precision, "double") == 0)
+      a.render.precision = rt::Precision::kDouble;
+    // The CPU reference computes in double, so --precision auto is double here.
+    std::string notice;
+    a.render.precision = rt::resolve_precision(a.render.precision, true, "cpu-reference", &notice);
     rt::FlatScene flat = rt::flatten_scene(scene, a.render);
     rt::set_camera(flat, scene, a.camera, a.render);
     rt::Image8 ref = rt::read_png(files[1]);

@@ -73,6 +73,38 @@ TEST(RenderScheduler, SlowImagesAreBandedOnTheAlignment) {
   EXPECT_EQ(pass[0].rows(), 8);
 }
 
+// A wide image whose one sample is quick but whose pass of several would not be: bands of
+// at least kMinBandPixels take several samples each, so a pixel's setup is shared by them.
+TEST(RenderScheduler, WideImagesTakeSeveralSamplesPerBand) {
+  const int width = 1000, height = 1000, align = 8;
+  rt::RenderScheduler s(width, height, 1000, align);
+  const double per_row_sample = 1e-4;  // 0.1 s for one sample of the image.
+  const int min_rows = static_cast<int>(rt::RenderScheduler::kMinBandPixels / width + 1);
+  int last = 1;
+  for (int i = 0; i < 4; ++i) {
+    std::vector<rt::RenderWork> pass = s.plan();
+    ExpectCoversOnce(pass, height, align);
+    const int n = pass[0].samples();
+    EXPECT_LE(n, 4 * last);
+    if (i > 0) {
+      EXPECT_GT(n, 1) << "pass " << i;
+    }
+    for (const rt::RenderWork& w : pass) {
+      // At least 64 Ki pixels, within the rounding to the alignment.
+      if (w.row_end != height) {
+        EXPECT_GE(w.rows() + align / 2, min_rows);
+      }
+      EXPECT_LE(per_row_sample * w.rows() * n, rt::RenderScheduler::kSplitSeconds);
+    }
+    last = n;
+    RunPass(s, pass, per_row_sample);
+  }
+  // 0.15 s over the 66 rows of 64 Ki pixels, 6.6 ms a sample: 23 samples, reached after
+  // 1, 4 and 16 (fourfold growth).
+  EXPECT_EQ(last, 23);
+  EXPECT_EQ(s.plan()[0].samples(), 23);
+}
+
 // A distributed render's tile: passes cover rows [32, 80) of 100 and nothing else, with
 // bands on the alignment from the tile's first row.
 TEST(RenderScheduler, TilePassesCoverOnlyTheTilesRows) {

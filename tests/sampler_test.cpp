@@ -25,6 +25,23 @@ double ChiSquareCritical(int df) {
   return df * std::pow(1 - h + z * std::sqrt(h), 3);
 }
 
+// The keys hashed once per pixel (PixelKey, StratumKey) are the same Hash4 values as the
+// keys of every random number before that split, so images did not change with it.
+TEST(Sampler, PixelKeysAreTheHashesOfTheirCoordinates) {
+  for (uint p : {0u, 1u, 12345u, 0xffffffffu})
+    for (uint seed : {0u, 7u})
+      for (uint s : {0u, 3u, 63u}) {
+        PixelKey pk = MakePixelKey(p, 64, 8, seed);
+        EXPECT_EQ(PixelSampleKey(pk, s).prefix, Hash4(p, s, seed, 0x3c6ef372u));
+        for (uint d : {0u, 2u, 4u, 0x9e3779b9u}) {
+          EXPECT_EQ(StratumKey(pk.hash, seed, d, RT_STRATA_SALT_2D),
+                    Hash4(p, d, seed, 0x51ed2701u));
+          EXPECT_EQ(StratumKey(pk.hash, seed, d, RT_STRATA_SALT_1D),
+                    Hash4(p, d, seed, 0x2c1b3c6du));
+        }
+      }
+}
+
 TEST(Sampler, SameKeySameValueWhateverTheOrder) {
   std::vector<uint> dims = {0, 1, 2, 3, 4, 77, 1u << 31};
   std::vector<float> first;

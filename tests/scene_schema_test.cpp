@@ -48,20 +48,13 @@ std::string error_of(const std::string& xml, bool strict = false) {
 }
 
 TEST(SceneSchema, UnsupportedElementsAndAttributeValuesAreErrors) {
-  EXPECT_NE(
-      error_of(with("<VertexData>", "<ZeroBasedIndexing>true</ZeroBasedIndexing><VertexData>"))
-          .find("s.xml: ZeroBasedIndexing: not supported (line"),
-      std::string::npos);
-  EXPECT_NE(error_of(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"left\">"))
-                .find("handedness=\"left\" (line 2) is not supported: the image would be mirrored"),
-            std::string::npos);
   // Object lights are read, but not moving ones.
   EXPECT_NE(
       error_of(with("</Objects>",
                     "<LightMesh id=\"2\"><MotionBlur>1 0 0</MotionBlur></LightMesh></Objects>"))
           .find("LightMesh id=2 > MotionBlur: not supported"),
       std::string::npos);
-  // Right-handed is what the renderer does; empty unsupported elements change nothing.
+  // Both handednesses are read; empty elements change nothing.
   SceneDesc s = load(with("<Camera id=\"1\">", "<Camera id=\"1\" handedness=\"right\">"));
   EXPECT_TRUE(s.warnings.empty());
   s = load(with("<VertexData>", "<Textures/><TexCoordData>\n</TexCoordData><VertexData>"));

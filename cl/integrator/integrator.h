@@ -27,11 +27,11 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
   RayStack stack;
   stack.size = 0;
-  PushRay(&stack, MakeTask(camera_ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0));
+  // The camera ray is the first task; later ones come from the stack (NextRay).
+  RayTask task = MakeTask(camera_ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0);
   real3 radiance = Vec3(0.0f);
   RecordPrimaryMiss(info);
-  while (stack.size > 0) {
-    RayTask task = PopRay(&stack);
+  do {
     Hit hit;
     *rays += 1u;
     int cull = (h->flags & RT_FLAG_CULL_BACK_FACES) != 0 && task.depth == 0;
@@ -56,32 +56,27 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
     if (task.depth >= max_depth) continue;
     FaceForward(&s);
     Scatter(sd, &m, &s, &task, rs, &stack);
-  }
+  } while (NextRay(&stack, &task));
   return radiance;
 }
 
-// Camera sample `sample` of pixel (x, y): its radiance, and its reconstruction-filter
-// weight in *weight.
-RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, int x, int y, uint sample,
-                             RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
+// Camera sample `sample` of a pixel: its radiance, and its reconstruction-filter weight in
+// *weight. `info` (may be null) receives the facts of the first camera ray.
+RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraPixel* cp,
+                             uint sample, RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
                              RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
-  RT_GLOBAL const Camera* cam = &h->camera;
-  CameraSample cs = GenerateCameraSample(sd, x, y, sample);
+  CameraSample cs = GeneratePixelSample(sd, cp, sample);
   *weight = 1.0f;
   if (h->filter == RT_FILTER_GAUSSIAN) {
     real dx = cs.film.x - 0.5f, dy = cs.film.y - 0.5f;
     *weight = ExpR(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
-  // The background image is stretched over the film, pixel (x, y) at (x, y) / resolution:
-  // with the bilinear lookup's convention (texture/image_texture.h) an image of the film's
-  // size is reproduced texel for texel, as in the course's galactica images.
-  real2 pixel_uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
 #if RT_COMPILED(RT_FEATURE_PATH_TRACING)
   if (RT_HAS(sd, RT_FEATURE_PATH_TRACING) && (h->flags & RT_FLAG_PATH_TRACING) != 0)
-    return PathLi(sd, cs.key, cs.ray, pixel_uv, info, rays);
+    return PathLi(sd, cs.key, cs.ray, cp->uv, info, rays);
 #endif
-  return Li(sd, cs.key, cs.ray, pixel_uv, info, rays);
+  return Li(sd, cs.key, cs.ray, cp->uv, info, rays);
 }
 
 #endif  // RT_INTEGRATOR_H

@@ -7,7 +7,9 @@
 #include "../film_types.h"
 #include "../ray.h"
 
+// `info` is null for the samples after a pixel's first, whose facts nobody reads.
 RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, real3 normal) {
+  if (!info) return;
   info->t = hit.t;  // Rounds to the float of the output in double.
   info->instance = hit.instance;
   info->primitive = hit.primitive;

@@ -61,4 +61,11 @@ RT_DEVICE void PushRay(RT_PRIVATE RayStack* stack, RayTask task) {
 
 RT_DEVICE RayTask PopRay(RT_PRIVATE RayStack* stack) { return stack->tasks[--stack->size]; }
 
+// Pops the next pending ray into *task; 0 when the tree is done.
+RT_DEVICE int NextRay(RT_PRIVATE RayStack* stack, RT_PRIVATE RayTask* task) {
+  if (stack->size == 0) return 0;
+  *task = PopRay(stack);
+  return 1;
+}
+
 #endif  // RT_INTEGRATOR_RAY_TREE_H

@@ -17,8 +17,9 @@ RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
                                 RaySampler rs, RT_PRIVATE RayStack* stack) {
   real fr = ConductorFresnel(m, s);
   real3 r = MirrorDirection(sd, m, s, rs);
-  PushRay(stack, ChildTask(task, SpawnRay(sd, s, r, 0), task->weight * ToReal3(m->mirror) * fr,
-                           task->medium, RT_CHILD_REFLECTED, 0));
+  PushRay(stack,
+          ChildTask(task, SpawnRay(sd, s, r, ReflectionLeavesBelow(sd, s)),
+                    task->weight * ToReal3(m->mirror) * fr, task->medium, RT_CHILD_REFLECTED, 0));
 }
 
 RT_DEVICE BsdfSample SampleConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,

@@ -1,5 +1,6 @@
 // Image lookups: texels packed as 8-bit RGB in one uint each (red in the low byte),
-// values returned on the 0..255 scale. Coordinates outside the image repeat the edge
+// values returned on the 0..255 scale; or, for HDR images, three uints per texel holding
+// the bits of float R, G, B, returned as they are. Coordinates outside the image repeat the edge
 // texel, as the course's specification suggests.
 #ifndef RT_IMAGE_TEXTURE_H
 #define RT_IMAGE_TEXTURE_H
@@ -16,7 +17,12 @@ RT_DEVICE real3 FetchTexel(RT_GLOBAL const uint* texels, RT_GLOBAL const Texture
                            int y) {
   x = x < 0 ? 0 : (x >= t->width ? t->width - 1 : x);
   y = y < 0 ? 0 : (y >= t->height ? t->height - 1 : y);
-  return UnpackTexel(texels[t->first_texel + y * t->width + x]);
+  int i = y * t->width + x;
+  if (t->hdr) {
+    RT_GLOBAL const uint* p = texels + t->first_texel + 3 * i;
+    return make_real3((real)as_float(p[0]), (real)as_float(p[1]), (real)as_float(p[2]));
+  }
+  return UnpackTexel(texels[t->first_texel + i]);
 }
 
 // u runs along the rows from the left edge, v down the columns from the top edge; the

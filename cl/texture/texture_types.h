@@ -1,5 +1,5 @@
-// The textures of a scene as both devices read them: one array of packed 8-bit texels
-// shared by every image, one descriptor per TextureMap, and per-triangle texture
+// The textures of a scene as both devices read them: one array of texels shared by every
+// image (packed 8-bit RGB, or float RGB for HDR images), one descriptor per TextureMap, and per-triangle texture
 // coordinates parallel to the triangle array. Layout rules as in scene_types.h.
 #ifndef RT_TEXTURE_TYPES_H
 #define RT_TEXTURE_TYPES_H
@@ -42,6 +42,9 @@ typedef struct TextureDesc {
   int noise_conversion;
   float checker_scale;
   float checker_offset;
+  // 1: the image is high-dynamic-range (EXR, RGBE) and its texels are three floats each
+  // (the bits of R, G, B, as uints) in the texel array; 0: one packed 8-bit RGB uint.
+  int hdr;
 } TextureDesc;
 
 // The texture maps an object lists, by index into the descriptors; -1 ends the list.

@@ -46,11 +46,14 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   auto worker = [&] {
     uint64_t mine = 0;
     for (size_t c; (c = next.fetch_add(kChunk)) < count;) {
-      for (size_t i = first + c, end = first + std::min(count, c + kChunk); i < end; ++i) {
+      // The pixel's coordinates advance with it: one division per chunk, not two per pixel.
+      const size_t begin = first + c;
+      int y = static_cast<int>(begin / width), x = static_cast<int>(begin - size_t(y) * width);
+      for (size_t i = begin, end = first + std::min(count, c + kChunk); i < end; ++i) {
         const uint32_t before = accum_[i].rays;
-        accumulate(&view_, static_cast<int>(i % width), static_cast<int>(i / width),
-                   work.sample_begin, work.sample_end, &accum_[i], &primary_[i]);
+        accumulate(&view_, x, y, work.sample_begin, work.sample_end, &accum_[i], &primary_[i]);
         mine += accum_[i].rays - before;
+        if (++x == width) x = 0, ++y;
       }
     }
     rays += mine;

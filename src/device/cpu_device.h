@@ -10,6 +10,7 @@ class CpuDevice final : public RenderDevice {
   // `threads` <= 0: all cores. The image does not depend on the count.
   explicit CpuDevice(int threads);
   std::string name() const override { return "cpu-reference"; }
+  bool has_double() const override { return true; }
   void check_memory(const FlatScene& flat, uint64_t host_bytes) const override;
   DeviceLoadInfo load(const FlatScene& flat) override;
   uint64_t render(const RenderWork& work) override;

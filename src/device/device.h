@@ -52,6 +52,8 @@ class RenderDevice {
   virtual ~RenderDevice() = default;
   // "cpu-reference", or the OpenCL device's name.
   virtual std::string name() const = 0;
+  // Whether the shared math can run in double here (--precision double; auto picks it).
+  virtual bool has_double() const { return false; }
   // Checks, before anything is allocated, that rendering `flat`'s camera fits: the device's
   // buffers (scene arrays and film) in its memory, and `host_bytes` more (the caller's
   // copies and outputs) in the host's. Throws std::runtime_error, one line naming the

@@ -17,7 +17,11 @@ TileResult TileWorker::render(const TileTask& task) {
   if (task.scene != scene_index_) {
     scene_index_ = -1;
     scene_ = load_job_scene(opt_.scenes.at(task.scene), opt_, false);
-    flat_ = flatten_scene(scene_.desc, opt_.render);
+    RenderOptions render = opt_.render;
+    std::string notice;  // Rank 0 prints the notice of its own device.
+    render.precision =
+        resolve_precision(render.precision, device_->has_double(), device_->name(), &notice);
+    flat_ = flatten_scene(scene_.desc, render);
     scene_index_ = task.scene;
     camera_ = -1;
   }

@@ -1,4 +1,5 @@
 #include "image/read_hdr.h"
+#include "image/read_ldr.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -171,14 +172,44 @@ ImageF read_radiance_hdr(const std::string& path) {
   return img;
 }
 
-ImageF read_hdr_image(const std::string& path) {
+namespace {
+
+std::string lower_extension(const std::string& path) {
   std::string ext = path.substr(
       path.find_last_of('.') == std::string::npos ? path.size() : path.find_last_of('.'));
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+ImageF read_hdr_image(const std::string& path) {
+  std::string ext = lower_extension(path);
   if (ext == ".exr") return read_exr(path);
   if (ext == ".hdr" || ext == ".pic") return read_radiance_hdr(path);
   throw InputError(path + ": not an HDR image (expected .exr, .hdr or .pic)");
+}
+
+bool has_hdr_extension(const std::string& path) {
+  std::string ext = lower_extension(path);
+  return ext == ".exr" || ext == ".hdr" || ext == ".pic";
+}
+
+ImageF read_any_image(const std::string& path) {
+  return has_hdr_extension(path) ? read_hdr_image(path) : read_ldr(path);
+}
+
+std::string first_invalid_texel(const ImageF& img) {
+  for (size_t i = 0; i < img.pixels.size(); ++i)
+    if (!(img.pixels[i] >= 0 && std::isfinite(img.pixels[i]))) {
+      size_t pixel = i / img.channels;
+      char value[32];
+      std::snprintf(value, sizeof value, "%.10g", img.pixels[i]);
+      return "texel (" + std::to_string(pixel % img.width) + ", " +
+             std::to_string(pixel / img.width) + ") is " + value;
+    }
+  return "";
 }
 
 }  // namespace rt

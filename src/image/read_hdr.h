@@ -23,4 +23,15 @@ ImageF read_radiance_hdr(const std::string& path);
 // Chooses the reader by extension (.exr; .hdr or .pic), case-insensitively.
 ImageF read_hdr_image(const std::string& path);
 
+// Whether read_hdr_image reads `path`: its extension is .exr, .hdr or .pic (any case).
+bool has_hdr_extension(const std::string& path);
+
+// Reads an HDR file (by extension) as radiance, any other through read_ldr on its
+// 0..255 scale: the images textures and environment maps come in.
+ImageF read_any_image(const std::string& path);
+
+// Empty when every value is finite and >= 0 (radiance and reflectance read from an HDR
+// file must be), else what the first other value is: "texel (3, 0) is -1".
+std::string first_invalid_texel(const ImageF& img);
+
 }  // namespace rt

@@ -21,13 +21,20 @@ std::vector<RenderWork> RenderScheduler::plan() const {
   if (done_ >= samples_ || width_ <= 0 || row_end_ <= row_begin_) return pass;
   double image_cost = 0;  // One sample of the whole image, estimated.
   for (int y = row_begin_; y < row_end_; ++y) image_cost += row_cost_[y];
-  const bool banded = measured_ && image_cost > kSplitSeconds;
   int n = 1;
-  if (measured_ && !banded) {
-    long want = std::lround(kTargetSeconds / std::max(image_cost, 1e-9));
+  if (measured_) {
+    // As many samples as fit in kTargetSeconds over a band of kMinBandPixels (the whole
+    // tile when it is smaller): each launch then runs several samples of a pixel in a row,
+    // and a pixel's setup (its film, its sample keys) is paid once for all of them.
+    const int tile_rows = row_end_ - row_begin_;
+    const int min_rows = std::min(
+        tile_rows, std::max(align_, static_cast<int>((kMinBandPixels + width_ - 1) / width_)));
+    const double min_band_cost = image_cost * min_rows / tile_rows;
+    long want = std::lround(kTargetSeconds / std::max(min_band_cost, 1e-9));
     n = static_cast<int>(
         std::clamp<long>(want, 1, std::min<long>(4L * last_pass_samples_, 1L << 20)));
   }
+  const bool banded = measured_ && image_cost * n > kSplitSeconds;
   const int s1 = std::min(samples_, done_ + n);
   for (int row = row_begin_; row < row_end_;) {
     int rows = row_end_ - row;

@@ -4,13 +4,14 @@
 //
 // Policy (one for every device): a pass covers the whole image once with the same samples,
 // so every pixel always holds the same sample count. The first pass is one sample of the
-// whole image; its time, then each band's, gives a cost per row and sample. When one sample
-// of the image is quick, passes take as many samples as fit in about kTargetSeconds
-// (growing at most fourfold from pass to pass); when it would take over kSplitSeconds, a
-// pass is one sample in bands of rows of about kTargetSeconds each, so each launch stays
-// short (progress, GPU watchdogs). Sampling stops after a pass when every sample is taken,
-// when cancellation is asked, when the next pass would end after the time limit, or when
-// the estimated relative noise is below the target.
+// whole image; its time, then each band's, gives a cost per row and sample. Later passes
+// take as many samples as fit in about kTargetSeconds over a band of kMinBandPixels (the
+// whole image when smaller), growing at most fourfold from pass to pass: several samples
+// per launch spread a pixel's setup over them, and a band that large keeps a GPU busy.
+// When a pass would take over kSplitSeconds, it runs in bands of rows of about
+// kTargetSeconds each, so each launch stays short (progress, GPU watchdogs). Sampling stops after a
+// pass when every sample is taken, when cancellation is asked, when the next pass would end after
+// the time limit, or when the estimated relative noise is below the target.
 #pragma once
 
 #include <atomic>
@@ -25,6 +26,7 @@ namespace rt {
 class RenderScheduler {
  public:
   static constexpr double kTargetSeconds = 0.15, kSplitSeconds = 0.5;
+  static constexpr long kMinBandPixels = 65536;
 
   // Plans rows [row_begin, row_end) of an image `height` rows tall (row_end < 0: to the
   // last row); a distributed render gives each rank such a tile. row_begin must be a

@@ -33,6 +33,12 @@ void Loader::read_cameras(const XMLElement* scene) {
       list.push_back(c);
   for (const XMLElement* c : list) {
     CameraDesc cam;
+    if (const char* hand = c->Attribute("handedness")) {
+      std::string h = hand;
+      if (h != "left" && h != "right")
+        fail(c, "handedness '" + shorten(hand) + "' is neither left nor right");
+      cam.left_handed = h == "left";
+    }
     cam.position = vec3(child(c, "Position", true));
     const XMLElement* up = child(c, "Up", true);
     cam.up = nonzero(up, vec3(up));

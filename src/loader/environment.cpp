@@ -24,12 +24,6 @@ std::string trimmed(const std::string& s) {
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
-bool has_hdr_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".hdr" || ext == ".pic";
-}
-
 }  // namespace
 
 // The map is read here, when the light is read, so a missing or unreadable file fails the
@@ -72,19 +66,14 @@ void Loader::read_environment_light(const XMLElement* light, const XMLElement* s
   ImageF map;
   try {
     scene_.inputs.push_back(path.string());
-    map =
-        has_hdr_extension(path.string()) ? read_hdr_image(path.string()) : read_ldr(path.string());
+    map = read_any_image(path.string());
   } catch (const std::exception& err) {
     fail(id_e, std::string("environment map ") + err.what());
   }
   if (map.channels != 1 && map.channels < 3) fail(id_e, "environment map: not an RGB image");
-  for (size_t i = 0; i < map.pixels.size(); ++i)
-    if (!(map.pixels[i] >= 0 && std::isfinite(map.pixels[i]))) {
-      size_t pixel = i / map.channels;
-      fail(id_e, "environment map " + path.string() + ": texel (" +
-                     std::to_string(pixel % map.width) + ", " + std::to_string(pixel / map.width) +
-                     ") is " + fmt(map.pixels[i]) + " (radiance must be finite and >= 0)");
-    }
+  if (std::string bad = first_invalid_texel(map); !bad.empty())
+    fail(id_e,
+         "environment map " + path.string() + ": " + bad + " (radiance must be finite and >= 0)");
   scene_.environment_map = std::move(map);
   scene_.lights.push_back(env);  // flatten_scene places the map and sets the sizes.
 }

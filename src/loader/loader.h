@@ -67,7 +67,7 @@ class Loader {
   void read_textures(const XMLElement* scene);
   TextureMapDesc read_texture_map(const XMLElement* e,
                                   const std::map<std::string, std::string>& images,
-                                  std::map<std::string, int>& loaded);
+                                  std::map<std::pair<std::string, bool>, int>& loaded);
   void read_texcoords(const XMLElement* scene);
   std::vector<int> textures_of(const XMLElement* e) const;
   void check_texture_coordinates() const;
@@ -75,7 +75,16 @@ class Loader {
   Mat4 transform_of(const XMLElement* e) const;
   Vec3d motion_of(const XMLElement* e) const;
   Vec3d radiance_of(const XMLElement* e) const;
-  int vertex_index(const XMLElement* e, double one_based, long offset = 0) const;
+  int vertex_index(const XMLElement* e, double index, long offset = 0) const;
+  // The first index of VertexData and TexCoordData: 1, or 0 with <ZeroBasedIndexing>.
+  int index_base() const { return zero_based_ ? 0 : 1; }
+  void read_index_base(const XMLElement* scene);
+  // The numbers of e's binaryFile (see binary_data.h), `per_record` per record, as doubles.
+  std::vector<double> binary_numbers(const XMLElement* e, int per_record, const char* record,
+                                     bool ints);
+  // e's numbers: inline text, or its binaryFile's records.
+  std::vector<double> data_numbers(const XMLElement* e, int per_record, const char* record,
+                                   bool ints, size_t min_count = 0);
   int add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, bool smooth, bool uvs);
   void warn(const XMLElement* e, const std::string& what) {
     warn(file_ + ": " + path_of(e) + ": " + what);
@@ -89,15 +98,17 @@ class Loader {
 
   std::string file_;
   LoadOptions options_;
+  bool zero_based_ = false;  // <ZeroBasedIndexing>true</ZeroBasedIndexing> (hw6/sponza).
   SceneDesc scene_;
   std::map<std::string, int> material_ids_;
   std::map<std::string, Material> brdfs_;   // BRDF id -> the members a BRDF sets.
   std::map<std::string, Mat4> transforms_;  // Keyed "t1", "s2", "r3", "c4".
   std::vector<Vec3d> vertices_;
-  std::vector<std::array<double, 2>> texcoords_;  // TexCoordData, one pair per vertex.
-  std::map<std::string, int> texture_ids_;        // TextureMap id -> index.
-  std::map<std::string, int> mesh_objects_;       // Mesh id -> object index.
-  std::map<std::string, int> instance_objects_;   // MeshInstance id -> object index.
+  std::vector<std::array<double, 2>> texcoords_;   // TexCoordData, one pair per vertex.
+  std::map<std::string, int> texture_ids_;         // TextureMap id -> index.
+  std::map<std::string, int> mesh_objects_;        // Mesh id -> object index.
+  std::map<std::string, int> instance_objects_;    // MeshInstance id -> object index.
+  std::map<std::string, int> light_mesh_objects_;  // LightMesh id -> object index.
 };
 
 }  // namespace loader

@@ -57,7 +57,7 @@ void Loader::read_transformations(const XMLElement* scene) {
 void Loader::read_vertices(const XMLElement* scene) {
   const XMLElement* vd = child(scene, "VertexData", false);
   if (!vd) return;
-  auto v = numbers(vd, 0, SIZE_MAX);
+  auto v = data_numbers(vd, 3, "vertex", false);
   if (v.size() % 3 != 0) fail(vd, std::to_string(v.size()) + " numbers is not a multiple of 3");
   for (size_t i = 0; i + 2 < v.size(); i += 3) vertices_.push_back({v[i], v[i + 1], v[i + 2]});
 }
@@ -92,16 +92,20 @@ Mat4 Loader::transform_of(const XMLElement* e) const {
 
 Vec3d Loader::motion_of(const XMLElement* e) const { return child_vec3(e, "MotionBlur", {}); }
 
-// Checks in double before any conversion, so 1e30 or -1e300 cannot overflow a long.
-int Loader::vertex_index(const XMLElement* e, double one_based, long offset) const {
-  if (one_based != std::floor(one_based))
-    fail(e, "vertex index '" + fmt(one_based) + "' is not a whole number");
-  double g = one_based + static_cast<double>(offset);
-  if (!(g >= 1 && g <= static_cast<double>(vertices_.size())))
-    fail(e, "vertex index " + fmt(one_based) +
+// Checks in double before any conversion, so 1e30 or -1e300 cannot overflow a long. The
+// message gives the range in the file's own base (1, or 0 with ZeroBasedIndexing).
+int Loader::vertex_index(const XMLElement* e, double index, long offset) const {
+  if (index != std::floor(index))
+    fail(e, "vertex index '" + fmt(index) + "' is not a whole number");
+  const int base = index_base();
+  double g = index + static_cast<double>(offset);
+  if (!(g >= base && g < static_cast<double>(vertices_.size()) + base))
+    fail(e, "vertex index " + fmt(index) +
                 (offset ? " + vertexOffset " + std::to_string(offset) + " = " + fmt(g) : "") +
-                " out of range [1, " + std::to_string(vertices_.size()) + "]");
-  return static_cast<int>(g) - 1;
+                " out of range [" + std::to_string(base) + ", " +
+                std::to_string(static_cast<long>(vertices_.size()) - 1 + base) + "]" +
+                (zero_based_ ? " (ZeroBasedIndexing)" : ""));
+  return static_cast<int>(g) - base;
 }
 
 // Builds a mesh from inline indices into VertexData or from a PLY file. Degenerate
@@ -111,6 +115,8 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
   MeshDesc mesh;
   mesh.element = describe(obj);
   mesh.smooth = smooth;
+  if (faces->Attribute("plyFile") && faces->Attribute("binaryFile"))
+    fail(faces, "has both plyFile and binaryFile: only one source is allowed");
   if (const char* ply = faces->Attribute("plyFile")) {
     std::filesystem::path p(ply);
     if (p.is_relative()) p = std::filesystem::path(file_).parent_path() / p;
@@ -126,7 +132,7 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
     mesh.triangles = pm.triangles;
     for (auto& t : pm.uvs) mesh.uvs.push_back({t[0], t[1]});
   } else {
-    auto idx = numbers(faces, 3, SIZE_MAX);
+    auto idx = data_numbers(faces, 3, "triangle", true, 3);
     if (idx.size() % 3 != 0)
       fail(faces, std::to_string(idx.size()) + " indices is not a multiple of 3");
     int offset = 0;
@@ -149,13 +155,15 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
         int g = vertex_index(faces, idx[i + k], offset);
         int t = -1;
         if (uvs) {
+          const int base = index_base();
           double tg = idx[i + k] + static_cast<double>(tex_offset);
-          if (!(tg >= 1 && tg <= static_cast<double>(texcoords_.size())))
+          if (!(tg >= base && tg < static_cast<double>(texcoords_.size()) + base))
             fail(faces, "texture coordinate index " + fmt(idx[i + k]) +
                             (tex_offset ? " + textureOffset " + std::to_string(tex_offset) : "") +
-                            " out of range [1, " + std::to_string(texcoords_.size()) +
-                            "] of TexCoordData");
-          t = static_cast<int>(tg) - 1;
+                            " out of range [" + std::to_string(base) + ", " +
+                            std::to_string(static_cast<long>(texcoords_.size()) - 1 + base) +
+                            "] of TexCoordData" + (zero_based_ ? " (ZeroBasedIndexing)" : ""));
+          t = static_cast<int>(tg) - base;
         }
         auto [it, inserted] =
             remap.emplace(std::make_pair(g, t), static_cast<int>(mesh.positions.size()));
@@ -185,8 +193,7 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
 Vec3d Loader::radiance_of(const XMLElement* e) const {
   const XMLElement* r = child(e, "Radiance", true);
   Vec3d v = vec3(r);
-  if (!(v.x >= 0 && v.y >= 0 && v.z >= 0))
-    fail_value(r, "is negative (light values must be >= 0)");
+  if (!(v.x >= 0 && v.y >= 0 && v.z >= 0)) fail_value(r, "is negative (light values must be >= 0)");
   return v;
 }
 
@@ -213,18 +220,24 @@ void Loader::read_objects(const XMLElement* scene) {
       o.transform = transform_of(e);
       o.motion = motion_of(e);
       if (name == "Mesh") mesh_objects_[key] = static_cast<int>(scene_.objects.size());
+      if (name == "LightMesh") light_mesh_objects_[key] = static_cast<int>(scene_.objects.size());
     } else if (name == "MeshInstance") {
       const char* base_id = e->Attribute("baseMeshId");
       if (!base_id) fail(e, "missing baseMeshId");
       // Older files reuse mesh ids for instances; a Mesh with the id wins.
-      auto it = mesh_objects_.find(base_id);
-      if (it == mesh_objects_.end()) {
-        it = instance_objects_.find(base_id);
-        if (it == instance_objects_.end())
-          fail(e,
-               std::string("baseMeshId '") + base_id + "' names no earlier Mesh or MeshInstance");
+      // Then a LightMesh: its instances are lights too, each with its own transform.
+      int base_index = -1;
+      for (auto* ids : {&mesh_objects_, &instance_objects_, &light_mesh_objects_}) {
+        auto it = ids->find(base_id);
+        if (it != ids->end()) {
+          base_index = it->second;
+          break;
+        }
       }
-      const ObjectDesc& base = scene_.objects[it->second];
+      if (base_index < 0)
+        fail(e, std::string("baseMeshId '") + shorten(base_id) +
+                    "' names no earlier Mesh, MeshInstance or LightMesh");
+      const ObjectDesc& base = scene_.objects[base_index];
       o.mesh = base.mesh;
       o.material = child(e, "Material", false) ? material_of(e) : base.material;
       o.textures = child(e, "Textures", false) ? textures_of(e) : base.textures;
@@ -235,6 +248,12 @@ void Loader::read_objects(const XMLElement* scene) {
                     "' is not true or false");
       o.transform = reset ? transform_of(e) : transform_of(e) * base.transform;
       o.motion = motion_of(e);
+      o.emits = base.emits;
+      o.radiance = base.radiance;
+      // Object lights are sampled where they are at time 0 (as LightMesh's own MotionBlur).
+      if (o.emits && length(o.motion) > 0)
+        fail_value(child(e, "MotionBlur", true),
+                   "is not supported on an instance of a LightMesh: the light would not move");
       instance_objects_[key] = static_cast<int>(scene_.objects.size());
     } else if (name == "Sphere" || name == "LightSphere") {
       o.kind = ObjectDesc::kSphere;

@@ -147,6 +147,7 @@ SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLE
   read_brdfs(scene);
   read_materials(scene);
   read_transformations(scene);
+  read_index_base(scene);
   read_vertices(scene);
   read_textures(scene);
   read_texcoords(scene);

@@ -14,6 +14,7 @@
 
 #include "cl/material/brdf.h"
 #include "errors.h"
+#include "image/read_hdr.h"
 #include "image/read_ldr.h"
 #include "loader/loader.h"
 #include "ply.h"
@@ -38,9 +39,20 @@ static std::string trimmed(const std::string& s) {
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
+// degamma="true" on a TextureMap (hw6/sponza.xml): its colours were stored gamma-encoded,
+// so they are decoded with the course's gamma of 2.2, as a material's degamma decodes its
+// reflectances, on the image's own scale (0..255 stays 0..255). The decoded values are no
+// longer whole 8-bit numbers, so the image is kept as floats (max_value 0, as HDR images;
+// see flat_textures.cpp).
+static void decode_gamma(ImageF& im) {
+  const float scale = im.max_value > 0 ? im.max_value : 1.0f;
+  for (float& v : im.pixels) v = scale * std::pow(v / scale, 2.2f);
+  im.max_value = 0;
+}
+
 TextureMapDesc Loader::read_texture_map(const XMLElement* e,
                                         const std::map<std::string, std::string>& images,
-                                        std::map<std::string, int>& loaded) {
+                                        std::map<std::pair<std::string, bool>, int>& loaded) {
   TextureMapDesc t;
   t.element = path_of(e);
   TextureDesc& d = t.desc;
@@ -76,16 +88,29 @@ TextureMapDesc Loader::read_texture_map(const XMLElement* e,
     std::string id = trimmed(text_of(ie));
     auto it = images.find(id);
     if (it == images.end()) fail(ie, "no Image with id '" + shorten(id) + "'");
-    auto [slot, fresh] = loaded.emplace(id, static_cast<int>(scene_.images.size()));
+    bool degamma = false;
+    if (const char* dg = e->Attribute("degamma")) {
+      if (std::string(dg) != "true" && std::string(dg) != "false")
+        fail(e, "degamma '" + shorten(dg) + "' is neither true nor false");
+      degamma = std::string(dg) == "true";
+    }
+    // A degammaed map gets its own decoded copy: other maps may use the image as stored.
+    auto [slot, fresh] =
+        loaded.emplace(std::make_pair(id, degamma), static_cast<int>(scene_.images.size()));
     if (fresh) {
       std::filesystem::path path(it->second);
       if (path.is_relative()) path = std::filesystem::path(file_).parent_path() / path;
+      // An HDR file (.exr, .hdr) keeps its linear values, divided by the Normalizer like
+      // any image's (hw5's sphere_point_hdr_texture sets it to 1); nothing degammas them.
       try {
         scene_.inputs.push_back(path.string());
-        scene_.images.push_back(read_ldr(path.string()));
+        scene_.images.push_back(read_any_image(path.string()));
       } catch (const std::exception& err) {
         fail(ie, std::string("image ") + err.what());
       }
+      if (std::string bad = first_invalid_texel(scene_.images.back()); !bad.empty())
+        fail(ie, "image " + path.string() + ": " + bad + " (values must be finite and >= 0)");
+      if (degamma) decode_gamma(scene_.images.back());
     }
     t.image = slot->second;
   } else if (d.decal == RT_DECAL_REPLACE_NORMAL || d.decal == RT_DECAL_REPLACE_BACKGROUND) {
@@ -106,7 +131,7 @@ void Loader::read_textures(const XMLElement* scene) {
       if (path.empty()) fail(im, "empty file name");
       images[id] = path;
     }
-  std::map<std::string, int> loaded;
+  std::map<std::pair<std::string, bool>, int> loaded;  // (Image id, degamma) -> image.
   for (auto* e = ts->FirstChildElement("TextureMap"); e; e = e->NextSiblingElement("TextureMap")) {
     const char* id = e->Attribute("id");
     if (!id) fail(e, "missing id attribute");
@@ -124,7 +149,7 @@ void Loader::read_textures(const XMLElement* scene) {
 void Loader::read_texcoords(const XMLElement* scene) {
   const XMLElement* td = child(scene, "TexCoordData", false);
   if (!td) return;
-  auto v = numbers(td, 0, SIZE_MAX);
+  auto v = data_numbers(td, 2, "texture coordinate pair", false);
   if (v.size() % 2 != 0) fail(td, std::to_string(v.size()) + " numbers is not a multiple of 2");
   for (size_t i = 0; i + 1 < v.size(); i += 2) texcoords_.push_back({v[i], v[i + 1]});
 }

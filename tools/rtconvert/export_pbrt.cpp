@@ -116,15 +116,18 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
   if (!s.cameras.empty()) {
     const rt::CameraDesc& c = s.cameras[0];
     Vec3d at = c.position + c.gaze;
-    // pbrt's camera space is left-handed: mirror x so the image is not flipped.
-    o << "Scale -1 1 1\nLookAt " << v(c.position) << "  " << v(at) << "  " << v(c.up) << "\n";
+    // pbrt's camera space is left-handed: mirror x so the image is not flipped (a camera
+    // the course file already calls left-handed is pbrt's own).
+    o << (c.left_handed ? "" : "Scale -1 1 1\n") << "LookAt " << v(c.position) << "  " << v(at)
+      << "  " << v(c.up) << "\n";
     // With a 90 degree field of view, screen coordinates are x/z on the image plane: the
     // course's near plane divided by its distance is the screen window (x mirrored, as the
     // camera space is).
     double n = c.near_distance;
     std::string image = c.image_name.substr(0, c.image_name.find_last_of('.')) + ".exr";
-    o << "Camera \"perspective\" \"float fov\" 90 \"float screenwindow\" [ " << -c.right / n << " "
-      << -c.left / n << " " << c.bottom / n << " " << c.top / n << " ]";
+    const double x0 = c.left_handed ? c.left : -c.right, x1 = c.left_handed ? c.right : -c.left;
+    o << "Camera \"perspective\" \"float fov\" 90 \"float screenwindow\" [ " << x0 / n << " "
+      << x1 / n << " " << c.bottom / n << " " << c.top / n << " ]";
     if (c.aperture > 0)
       o << " \"float lensradius\" " << c.aperture / std::sqrt(M_PI) << " \"float focaldistance\" "
         << c.focus_distance;

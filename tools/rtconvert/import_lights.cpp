@@ -12,7 +12,6 @@ using rt::Vec3d;
 constexpr double kScale = kRadianceScale;
 
 Vec3d v3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
-Vec3d v3(const float3& v) { return {v.x, v.y, v.z}; }
 
 Mat4 global_transform(const aiScene& ai, const aiString& name) {
   const aiNode* n = ai.mRootNode->FindNode(name);

@@ -103,7 +103,7 @@ void write_material(std::ostream& x, const Material& m, size_t id) {
 }
 
 void write_camera(std::ostream& x, const rt::CameraDesc& c, size_t id) {
-  x << "    <Camera id=\"" << id << "\">\n"
+  x << "    <Camera id=\"" << id << "\"" << (c.left_handed ? " handedness=\"left\"" : "") << ">\n"
     << "      <Position>" << vec(c.position) << "</Position>\n"
     << "      <Gaze>" << vec(c.gaze) << "</Gaze>\n"
     << "      <Up>" << vec(c.up) << "</Up>\n"

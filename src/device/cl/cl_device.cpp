@@ -32,6 +32,7 @@ class ClDevice final : public RenderDevice {
   }
 
   std::string name() const override { return name_; }
+  bool has_double() const override { return programs_->has_double(); }
   void check_memory(const FlatScene& flat, uint64_t host_bytes) const override;
   int row_alignment() const override { return program_ ? static_cast<int>(program_->local_y) : 1; }
   DeviceLoadInfo load(const FlatScene& flat) override;

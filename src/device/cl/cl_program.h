@@ -31,6 +31,7 @@ class ClProgramCache {
   // memory), *cache_hit whether it came from memory or the disk cache. Throws
   // std::runtime_error (one line; the build log goes to stderr in full).
   ClProgram& get(const std::string& options, double* compile_ms, bool* cache_hit);
+  bool has_double() const { return fp64_; }
 
  private:
   cl::Program build(const std::string& source, const std::string& options, bool* hit);
