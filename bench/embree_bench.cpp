@@ -32,6 +32,7 @@
 #include "flat_scene.h"
 #include "scene.h"
 #include "util/args.h"
+#include "world_frame.h"
 
 namespace {
 
@@ -89,8 +90,9 @@ RaySet CameraRays(const rt::FlatScene& flat) {
   return set;
 }
 
-// The scene's meshes as world-space triangles in one Embree scene of quality HIGH.
-RTCScene EmbreeScene(RTCDevice device, const rt::SceneDesc& scene) {
+// The scene's meshes as triangles of the frame the rays are in (the camera's, whose origin
+// is the world point `eye`: src/world_frame.h) in one Embree scene of quality HIGH.
+RTCScene EmbreeScene(RTCDevice device, const rt::SceneDesc& scene, rt::Vec3d eye) {
   RTCScene es = rtcNewScene(device);
   rtcSetSceneBuildQuality(es, RTC_BUILD_QUALITY_HIGH);
   for (const rt::ObjectDesc& o : scene.objects) {
@@ -104,10 +106,9 @@ RTCScene EmbreeScene(RTCDevice device, const rt::SceneDesc& scene) {
     rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_HIGH);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
         g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+    const rt::Mat4 to_frame = rt::object_to_frame(o, rt::Vec3d{}, eye);
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
-      // Identity transforms give exactly the floats our triangles hold.
-      rt::Vec3d p =
-          o.transform.is_identity() ? mesh.positions[i] : o.transform.point(mesh.positions[i]);
+      rt::Vec3d p = to_frame.point(mesh.positions[i]);
       v[3 * i] = static_cast<float>(p.x);
       v[3 * i + 1] = static_cast<float>(p.y);
       v[3 * i + 2] = static_cast<float>(p.z);
@@ -234,7 +235,8 @@ int TraceComparison(const Args& a, const rt::SceneDesc& desc, rt::RenderOptions 
   rt::set_camera(flat, desc, a.camera, opt);
   RaySet set = CameraRays(flat);
   RTCDevice device = NewDevice(0);
-  RTCScene es = EmbreeScene(device, desc);
+  const rt::Vec3d eye = opt.camera_frame ? desc.cameras[a.camera].position : rt::Vec3d{};
+  RTCScene es = EmbreeScene(device, desc, eye);
   rtcCommitScene(es);
   std::vector<float> ours(set.rays.size()), e1(set.rays.size()), e16(set.rays.size());
   double r_ours = MraysPerCpuSecond(
@@ -287,7 +289,7 @@ int BuildComparison(const Args& a, const rt::SceneDesc& desc, rt::RenderOptions 
       else
         identical = identical && SameBytes(first, flat);
       RTCDevice device = NewDevice(threads);
-      RTCScene es = EmbreeScene(device, desc);
+      RTCScene es = EmbreeScene(device, desc, rt::Vec3d{});
       w0 = WallSeconds();
       c0 = ProcessCpuSeconds();
       rtcCommitScene(es);

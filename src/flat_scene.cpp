@@ -61,9 +61,16 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   // largest arrays beside the full one, raising the peak memory of large meshes.
   size_t triangle_count = 0;
   for (const MeshDesc& mesh : scene.meshes) triangle_count += mesh.triangles.size();
+  // Per-triangle normals and texture coordinates are stored only where something reads
+  // them: normals for smooth meshes (cl/surface.h), coordinates for textured objects
+  // (cl/texture/texturing.h). A scene of flat, untextured meshes keeps both arrays at their
+  // one padding element (at 4 M triangles, 320 MB of the 558 MB the arrays held).
+  bool any_smooth = false, any_textured = false;
+  for (const MeshDesc& mesh : scene.meshes) any_smooth = any_smooth || mesh.smooth;
+  for (const ObjectDesc& o : scene.objects) any_textured = any_textured || !o.textures.empty();
   f.triangles.reserve(triangle_count);
-  f.normals.reserve(triangle_count);
-  f.triangle_uvs.reserve(triangle_count);
+  if (any_smooth) f.normals.reserve(triangle_count);
+  if (any_textured) f.triangle_uvs.reserve(triangle_count);
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
     const MeshDesc& mesh = scene.meshes[mi];
     if (mesh.triangles.empty()) continue;
@@ -94,13 +101,14 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
       tri.v1 = local(t[1]);
       tri.v2 = local(t[2]);
       f.triangles.push_back(tri);
+      if (!any_smooth && !any_textured) continue;
       TriangleNormals tn{};
       if (mesh.smooth) {
         tn.n0 = to_float3(vn[t[0]]);
         tn.n1 = to_float3(vn[t[1]]);
         tn.n2 = to_float3(vn[t[2]]);
       }
-      f.normals.push_back(tn);
+      if (any_smooth) f.normals.push_back(tn);
       TriangleUV uv{};
       if (!mesh.uvs.empty()) {
         auto at = [&](int k) {
@@ -111,7 +119,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
         uv.uv1 = at(1);
         uv.uv2 = at(2);
       }
-      f.triangle_uvs.push_back(uv);
+      if (any_textured) f.triangle_uvs.push_back(uv);
     }
   }
   f.blas_nodes = f.nodes.size();
