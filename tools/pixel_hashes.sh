@@ -7,6 +7,8 @@
 # quick: a quarter of each resolution at 4 samples per pixel (about a minute);
 # full:  every scene at its own resolution and sample count.
 # Scenes whose files are missing in ../shared are listed as "missing".
+# Moments files record the scene's path: checkouts beside the same shared/ folder agree on
+# every line but the example scene's moments (it lives inside the checkout).
 # RT_PIXEL_FLAGS: extra raytracer flags for every render, e.g. to compare with a baseline
 # made before the 8-bit conversion truncated by default:
 #   RT_PIXEL_FLAGS="--quantize round" tools/pixel_hashes.sh build quick > b.txt
@@ -17,7 +19,9 @@ mode="${2:-quick}"
 shift 2 || shift $#
 devices=("$@")
 [ ${#devices[@]} -eq 0 ] && devices=(cpu cl)
-shared="$here/../shared/scenes"
+# The scenes' canonical path: moments files record the scene's path, so two checkouts beside
+# the same shared/ folder hash equal moments only if they name it alike.
+shared="$(cd "$here/../shared/scenes" 2>/dev/null && pwd -P || echo "$here/../shared/scenes")"
 size=()
 [ "$mode" = quick ] && size=(--resolution-scale 0.25 --spp 4)
 # shellcheck disable=SC2206
