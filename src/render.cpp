@@ -90,12 +90,12 @@ double relative_mse(const std::vector<float>& img, const std::vector<float>& ref
 double noise_floor(const std::vector<float>& rgb, double tonemap_key) {
   const size_t n = rgb.size() / 3;
   if (!(tonemap_key > 0) || n == 0) return 1.0;
-  // The log-average of the photographic operator (src/image/tonemap.h), delta 1e-6.
-  double log_sum = 0;
-  for (size_t i = 0; i < n; ++i)
-    log_sum +=
-        std::log(1e-6 + std::max(0.0, Luminance(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2])));
-  return std::exp(log_sum / static_cast<double>(n)) / (tonemap_key * 255.0);
+  // The photographic operator's own log-average (src/image/tonemap.h), over the film.
+  ImageF film;
+  film.width = static_cast<int>(n);
+  film.height = 1;
+  film.pixels = rgb;
+  return LogAverageLuminance(film) / (tonemap_key * 255.0);
 }
 
 double noise_floor(const std::vector<PixelAccum>& accum, double tonemap_key) {

@@ -21,15 +21,22 @@ double PixelLuminance(const ImageF& hdr, size_t i) {
 
 }  // namespace
 
+double LogAverageLuminance(const ImageF& hdr) {
+  CheckChannels(hdr);
+  const size_t n = hdr.size();
+  if (n == 0) return 0.0;
+  double log_sum = 0.0;
+  // The small delta keeps black pixels (the background) from sending the sum to -inf.
+  for (size_t i = 0; i < n; ++i) log_sum += std::log(1e-6 + PixelLuminance(hdr, i));
+  return std::exp(log_sum / static_cast<double>(n));
+}
+
 PhotographicScale PhotographicStatistics(const ImageF& hdr, const PhotographicParams& params) {
   CheckChannels(hdr);
   PhotographicScale s;
   const size_t n = hdr.size();
   if (n == 0) return s;
-  double log_sum = 0.0;
-  // The small delta keeps black pixels (the background) from sending the sum to -inf.
-  for (size_t i = 0; i < n; ++i) log_sum += std::log(1e-6 + PixelLuminance(hdr, i));
-  s.scale = params.key / std::exp(log_sum / static_cast<double>(n));
+  s.scale = params.key / LogAverageLuminance(hdr);
   if (params.burn_percent > 0.0) {
     std::vector<double> sorted(n);
     for (size_t i = 0; i < n; ++i) sorted[i] = s.scale * PixelLuminance(hdr, i);

@@ -32,6 +32,9 @@ inline double Luminance(double r, double g, double b) {
 // Throws std::invalid_argument on an image with other than 3 or 4 channels.
 Image8 TonemapPhotographic(const ImageF& hdr, const PhotographicParams& params);
 
+// The log-average luminance Yavg of step 1 (0 for an empty image).
+double LogAverageLuminance(const ImageF& hdr);
+
 // The operator's two image-wide quantities (steps 1-3), so that pixels can be mapped one at
 // a time, e.g. a subset of pixels with the statistics of a whole reference image.
 struct PhotographicScale {
