@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cl/material/brdf.h"
+#include "render.h"
 #include "support/device_harness.h"
 
 namespace rt::test {
@@ -14,11 +15,9 @@ PixelStats RenderOnePixel(const SceneDesc& scene, const RenderOptions& opt) {
   FlatScene flat = flatten_scene(scene, opt);
   set_camera(flat, scene, 0, opt);
   RenderResult r = render_cpu(flat);
-  const PixelAccum& a = r.accum[0];
-  EXPECT_EQ(a.nonfinite, 0u);
-  double n = a.sum_sq.w, mean = a.sum.x / a.sum.w;
-  double var = (a.sum_sq.x / n - mean * mean) * n / (n - 1);
-  return {mean, std::sqrt(std::max(var, 0.0) / n)};
+  EXPECT_EQ(r.accum[0].nonfinite, 0u);
+  const PixelEstimate e = estimate_pixel(r.accum[0]);
+  return {e.mean[0], std::sqrt(e.var[0] / e.n)};
 }
 
 void ExpectMean(const PixelStats& s, double expected, const std::string& what) {
