@@ -157,6 +157,10 @@ typedef struct TriangleNormals {
 // --reflection-offset facing: a mirror or conductor seen from behind reflects from the side
 // the ray came from, not from the side of its normal as modelled (cl/material/mirror.h).
 #define RT_FLAG_FACING_REFLECTION 512
+// --ray-offset robust: spawned rays start the scene's epsilon plus a few ulps of the
+// surface's scale off it (cl/ray.h), not the scene's epsilon alone as the course's rays do.
+#define RT_FLAG_ROBUST_OFFSET 1024
+#define RT_ROBUST_OFFSET(sd) (((sd)->header->flags & RT_FLAG_ROBUST_OFFSET) != 0)
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \

@@ -57,6 +57,13 @@ OptionTable<RenderOptions> make_device_table() {
               "from behind: course: on the side of the normal as modelled, as the course's "
               "renderer (the ray meets the surface again; hw2 grass_desert needs it); facing: "
               "on the viewer's side")
+      .choice("--ray-offset",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"robust", true}},
+              RT_FIELD(robust_offset),
+              "where shadow, reflected and refracted rays start: course: the scene's "
+              "ShadowRayEpsilon along the normal, as the course's renderer (its images' shadow "
+              "and reflection edges); robust: that plus 8 float ulps of the surface's "
+              "coordinates, safe for scenes whose epsilon is small for their size or position")
       .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)

@@ -148,7 +148,8 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0) |
             (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
             (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
-            (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0);
+            (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0) |
+            (options.robust_offset ? RT_FLAG_ROBUST_OFFSET : 0);
   f.fast_math = options.fast_math;
   if (options.precision == Precision::kAuto)
     throw std::logic_error("--precision auto reached flatten_scene unresolved (resolve_precision)");

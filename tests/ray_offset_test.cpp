@@ -1,5 +1,6 @@
-// OffsetRayOrigin (cl/ray.h): a spawned ray's origin leaves the surface's plane on the
-// normal side at every scale, by the stated number of ulps.
+// OffsetRayOrigin (cl/ray.h): with --ray-offset robust a spawned ray's origin leaves the
+// surface's plane on the normal side at every scale, by the stated number of ulps; by
+// default (the course's convention) it moves by the scene's epsilon alone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -51,7 +52,7 @@ void CheckOffset(const OffsetCase& c, float scene_epsilon, std::mt19937& rng, in
     if (Dot(ng, d) > 0) ng = -ng;
     float scale =
         std::max({MaxComponent(Abs3(v0)), MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))});
-    float3 q = OffsetRayOrigin(p, ng, scene_epsilon, scale);
+    float3 q = OffsetRayOrigin(p, ng, scene_epsilon, scale, 1);
     double along = dot(D3(q) - D3(p), D3(ng));
     double above = dot(D3(q) - D3(v0), pn);  // Signed distance to the true plane.
     bool ok = along > 0 && above > 0;
@@ -104,7 +105,7 @@ TEST(GeometryOffset, MovesAlongTheNormalByEightUlpsOfTheLargerOfPointAndScale) {
     float3 n = Normalize(make_float3(g(rng), g(rng), g(rng)));
     float3 p = make_float3(c[0], c[1], c[2]);
     float scale = mags[pick(rng) % 7];
-    float3 q = OffsetRayOrigin(p, n, 0.0f, scale);
+    float3 q = OffsetRayOrigin(p, n, 0.0f, scale, 1);
     double m = std::max(
         {std::fabs(double(p.x)), std::fabs(double(p.y)), std::fabs(double(p.z)), double(scale)});
     double step = 8.0 / 8388608.0 * m;
@@ -133,6 +134,28 @@ TEST(GeometryOffset, TiltedPlaneFarAlongAnAxisItNearlyContains) {
     for (Vec3d n : {Vec3d{0.002, 1, 0}, Vec3d{-0.01, 1, 0.003}, Vec3d{0.02, 0.001, 1}})
       CheckOffset({mag, {1, 0, 0}, n}, 0.0f, rng, &failures);
   EXPECT_EQ(failures, 0);
+}
+
+TEST(GeometryOffset, CourseOffsetIsTheSceneEpsilonAlongTheNormal) {
+  // The default: q = p + n * epsilon, rounded once per coordinate, whatever the scale; with
+  // no scene epsilon the robust step is taken instead (a zero offset would re-hit).
+  std::mt19937 rng(24);
+  std::normal_distribution<float> g;
+  for (int i = 0; i < 200; ++i) {
+    float3 n = Normalize(make_float3(g(rng), g(rng), g(rng)));
+    float3 p = make_float3(100 * g(rng), 100 * g(rng), 100 * g(rng));
+    float scale = 1e4f;
+    float3 q = OffsetRayOrigin(p, n, 1e-3f, scale, 0);
+    float3 expected = p + n * 1e-3f;
+    EXPECT_EQ(q.x, expected.x);
+    EXPECT_EQ(q.y, expected.y);
+    EXPECT_EQ(q.z, expected.z);
+    float3 fallback = OffsetRayOrigin(p, n, 0.0f, scale, 0);
+    float3 robust = OffsetRayOrigin(p, n, 0.0f, scale, 1);
+    EXPECT_EQ(fallback.x, robust.x);
+    EXPECT_EQ(fallback.y, robust.y);
+    EXPECT_EQ(fallback.z, robust.z);
+  }
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
                                  RT_PRIVATE const Material* m, LightSample ls,
                                  RT_PRIVATE uint* rays) {
   if (!ls.valid || Dot(s->n, ls.wi) <= 0.0f) return Vec3(0.0f);
-  real3 origin = OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale);
+  real3 origin =
+      OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale, RT_ROBUST_OFFSET(sd));
   if (!Unoccluded(sd, origin, ls.p_light - origin, s->time, rays)) return Vec3(0.0f);
   return EvaluateBsdf(sd, m, s->n, s->wo, ls.wi, ls.irradiance);
 }

@@ -81,7 +81,7 @@ RT_DEVICE LightSample SampleMeshLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL 
   // light's own triangle cannot block it.
   real scale =
       fmax(MaxComponent(Abs3(v[0])), fmax(MaxComponent(Abs3(v[1])), MaxComponent(Abs3(v[2]))));
-  ls.p_light = OffsetRayOrigin(q, n, sd->header->shadow_epsilon, scale);
+  ls.p_light = OffsetRayOrigin(q, n, sd->header->shadow_epsilon, scale, RT_ROBUST_OFFSET(sd));
   return ls;
 }
 

@@ -79,7 +79,7 @@ RT_DEVICE LightSample SampleSphereLight(RT_PRIVATE const SceneData* sd,
   else
     ls.irradiance = ToReal3(light->emission) * (2.0f * RT_PI * SphereConeOneMinusCos(sin2_max));
   real3 nw = Normalize(TransformNormalByInverse(inst->world_to_object, n));
-  ls.p_light = OffsetRayOrigin(q, nw, sd->header->shadow_epsilon, 0.0f);
+  ls.p_light = OffsetRayOrigin(q, nw, sd->header->shadow_epsilon, 0.0f, RT_ROBUST_OFFSET(sd));
   return ls;
 }
 

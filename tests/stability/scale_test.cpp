@@ -32,6 +32,9 @@ ScaleFigures CompareScaled(Dev d, double s, Vec3d t, bool use_eps, const std::st
   rt::RenderOptions o;
   o.spp = kStageSpp;
   o.use_scene_epsilon = use_eps;
+  // Scale invariance is --ray-offset robust's promise; the default (the course's offset, the
+  // scene's epsilon alone) is an absolute length, as in the known limit below.
+  o.robust_offset = true;
   rt::SceneDesc base = Stage();
   rt::RenderResult a = RenderOn(d, Flatten(base, o), label + "_original");
   o.seed = 1;
