@@ -99,9 +99,8 @@ RT_DEVICE void FaceForward(RT_PRIVATE SurfacePoint* s) {
 // at the same shutter time.
 RT_DEVICE Ray SpawnRay(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s, real3 dir,
                        int below) {
-  real3 origin =
-      OffsetRayOrigin(s->p, below ? -s->ng : s->ng, sd->header->shadow_epsilon, s->scale,
-                      RT_ROBUST_OFFSET(sd));
+  real3 origin = OffsetRayOrigin(s->p, below ? -s->ng : s->ng, sd->header->shadow_epsilon, s->scale,
+                                 RT_ROBUST_OFFSET(sd));
   return MakeRay(origin, dir, RT_INFINITY, s->time);
 }
 
