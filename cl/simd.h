@@ -56,7 +56,13 @@ inline Quad QuadFrom3(float3 v) {
   std::memcpy(&q, &v, sizeof q);
   return q;
 }
+#ifdef __clang__  // Clang has no run-time-index shuffle builtin; lanes read by index instead.
+inline Quad QuadPermute(Quad v, QuadIndex index) {
+  return Quad{v[index[0]], v[index[1]], v[index[2]], v[index[3]]};
+}
+#else
 #define QuadPermute(v, index) __builtin_shuffle((v), (index))
+#endif
 inline QuadIndex QuadIndexOf(int a, int b, int c, int d) { return QuadIndex{a, b, c, d}; }
 #define QuadLane(v, i) ((v)[i])
 

@@ -18,6 +18,15 @@ const std::string kScenes = RT_SHARED_SCENES_DIR;
 
 #ifdef RT_CPU_KERNEL_AVX2
 
+bool SameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Field by field: the struct's padding (the normal's fourth lane) carries no value.
+bool SamePrimary(const PrimaryInfo& a, const PrimaryInfo& b) {
+  return SameBits(a.t, b.t) && a.instance == b.instance && a.primitive == b.primitive &&
+         SameBits(a.normal.x, b.normal.x) && SameBits(a.normal.y, b.normal.y) &&
+         SameBits(a.normal.z, b.normal.z);
+}
+
 // Renders every pixel of a size x size film of the scene's first camera with both kernels.
 void ExpectSamePixels(const std::string& rel, int spp, int size) {
   if (!std::filesystem::exists(kScenes + rel))
@@ -38,7 +47,7 @@ void ExpectSamePixels(const std::string& rel, int spp, int size) {
       PrimaryInfo pa{}, pb{};
       rt::accumulate_pixel_float(&sd, x, y, 0, spp, &a, &pa);
       rt::accumulate_pixel_float_avx2(&sd, x, y, 0, spp, &b, &pb);
-      if (std::memcmp(&a, &b, sizeof a) != 0 || std::memcmp(&pa, &pb, sizeof pa) != 0) ++differ;
+      if (std::memcmp(&a, &b, sizeof a) != 0 || !SamePrimary(pa, pb)) ++differ;
       if (pa.instance >= 0) ++hits;
     }
   }

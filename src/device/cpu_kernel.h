@@ -23,7 +23,9 @@ void accumulate_pixel_float(const SceneData* sd, int x, int y, int sample_begin,
 void accumulate_pixel_double(const SceneData* sd, int x, int y, int sample_begin, int sample_end,
                              PixelAccum* acc, PrimaryInfo* primary);
 int intersect_closest_float(const SceneData* sd, const Ray* ray, Hit* hit);
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+// GCC only (#pragma GCC target); a Clang build, such as the sanitized tree, keeps the
+// baseline kernel.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define RT_CPU_KERNEL_AVX2 1
 void accumulate_pixel_float_avx2(const SceneData* sd, int x, int y, int sample_begin,
                                  int sample_end, PixelAccum* acc, PrimaryInfo* primary);

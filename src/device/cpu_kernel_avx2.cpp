@@ -15,7 +15,7 @@
 #include "cl/scene_types.h"
 #include "device/cpu_kernel.h"
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 
 #pragma GCC push_options
 #pragma GCC target("avx2")
