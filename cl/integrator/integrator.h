@@ -17,6 +17,20 @@
 #include "primary_info.h"
 #include "ray_tree.h"
 
+// What shading reads of the surface point of `hit` (RT_SURFACE_* parts). A last hit (no ray
+// continues from it) in a scene without lights, textures or emitters is lit by the ambient
+// term alone, which reads the material only; it needs the normals where the primary-hit
+// facts are recorded (`record`) or where a transmissive surface must know its side.
+RT_DEVICE int SurfacePartsRead(RT_PRIVATE const SceneData* sd, RT_PRIVATE const RayTask* task,
+                               int max_depth, Hit hit, int record) {
+  if (task->depth < max_depth || sd->header->num_lights > 0 ||
+      RT_HAS(sd, RT_FEATURE_TEXTURES | RT_FEATURE_OBJECT_LIGHTS))
+    return RT_SURFACE_ALL;
+  int material = sd->instances[hit.instance].material;
+  if (record || IsTransmissiveType(sd, sd->materials[material].type)) return RT_SURFACE_NORMALS;
+  return 0;
+}
+
 // Radiance along a camera ray through the film at pixel_uv (where a background texture is
 // looked up); *rays counts every ray cast (camera, secondary, shadow).
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
@@ -40,8 +54,10 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
         radiance += task.weight * EscapedRadiance(sd, task.ray.direction, pixel_uv);
       continue;
     }
-    SurfacePoint s = ComputeSurface(sd, task.ray, hit);
-    if (task.depth == 0) RecordPrimaryHit(info, hit, s.n);
+    int record = info != 0 && task.depth == 0;
+    SurfacePoint s =
+        ComputeSurfaceParts(sd, task.ray, hit, SurfacePartsRead(sd, &task, max_depth, hit, record));
+    if (record) RecordPrimaryHit(info, hit, s.n);
     if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && task.inside)
       task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction));
     // An object light seen by this ray (a camera ray, or one a mirror or glass continued).
