@@ -33,8 +33,12 @@ typedef struct SurfacePoint {
 // onto the unit sphere) rather than from origin + t * direction, so its error does not
 // grow with the distance travelled. Each part is computed as in the whole point, so a part
 // is the same to the bit whatever else is asked.
-RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit,
-                                           int parts) {
+// The ray and hit come by pointer: passed by value, both are copied at every call.
+RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd,
+                                           RT_PRIVATE const Ray* ray_in,
+                                           RT_PRIVATE const Hit* hit_in, int parts) {
+  Ray ray = *ray_in;
+  Hit hit = *hit_in;
   RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
   int transformed =
       RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
@@ -114,7 +118,7 @@ RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd, Ray r
 }
 
 RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit) {
-  return ComputeSurfaceParts(sd, ray, hit, RT_SURFACE_ALL);
+  return ComputeSurfaceParts(sd, &ray, &hit, RT_SURFACE_ALL);
 }
 
 // Turns the normals to the side wo is on: scattering (unlike direct light, see Li) treats
