@@ -43,7 +43,10 @@ RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
 RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
                                RT_PRIVATE const Material* m, RaySampler rs, RT_PRIVATE uint* rays) {
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return ToReal3(m->diffuse);
-  return AddLightSamples(sd, s, m, rs, ToReal3(m->ambient * sd->header->ambient_light), rays);
+  real3 ambient = ToReal3(m->ambient * sd->header->ambient_light);
+  // Without lights, the ambient term alone: not even the light context is made.
+  if (sd->header->num_lights == 0) return ambient;
+  return AddLightSamples(sd, s, m, rs, ambient, rays);
 }
 
 #endif  // RT_INTEGRATOR_DIRECT_LIGHTING_H
