@@ -76,6 +76,9 @@ typedef struct Light {
 typedef struct Camera {
   float3 position;
   float3 u, v, w;  // Right, up, and backwards (w = -gaze), orthonormal.
+  // The course's camera rays (RT_FLAG_COURSE_CAMERA): its eye, film corner q and u, v in
+  // world space, each rounded as its float arithmetic rounds them (src/course_camera.cpp).
+  float3 course_eye, course_q, course_u, course_v;
   float left, right, bottom, top;
   float near_distance;
   float aperture;        // Edge of the square lens (or diameter of the disk lens).
@@ -157,6 +160,11 @@ typedef struct TriangleNormals {
 // --reflection-offset facing: a mirror or conductor seen from behind reflects from the side
 // the ray came from, not from the side of its normal as modelled (cl/material/mirror.h).
 #define RT_FLAG_FACING_REFLECTION 512
+// Camera rays as the course's renderer computes them: in world space, in float
+// (cl/camera.h, CourseCameraDirection).
+#define RT_FLAG_COURSE_CAMERA 1024
+// Shadow rays leave along the geometric normal instead of the course's shading normal.
+#define RT_FLAG_GEOMETRIC_OFFSET 2048
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \
