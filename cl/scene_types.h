@@ -76,6 +76,9 @@ typedef struct Light {
 typedef struct Camera {
   float3 position;
   float3 u, v, w;  // Right, up, and backwards (w = -gaze), orthonormal.
+  // The course's camera rays (RT_FLAG_COURSE_CAMERA): its eye, film corner q and u, v in
+  // world space, each rounded as its float arithmetic rounds them (src/course_camera.cpp).
+  float3 course_eye, course_q, course_u, course_v;
   float left, right, bottom, top;
   float near_distance;
   float aperture;        // Edge of the square lens (or diameter of the disk lens).
@@ -161,6 +164,11 @@ typedef struct TriangleNormals {
 // surface's scale off it (cl/ray.h), not the scene's epsilon alone as the course's rays do.
 #define RT_FLAG_ROBUST_OFFSET 1024
 #define RT_ROBUST_OFFSET(sd) (((sd)->header->flags & RT_FLAG_ROBUST_OFFSET) != 0)
+// Camera rays as the course's renderer computes them: in world space, in float
+// (cl/camera.h, CourseCameraDirection).
+#define RT_FLAG_COURSE_CAMERA 2048
+// Shadow rays leave along the geometric normal instead of the course's shading normal.
+#define RT_FLAG_GEOMETRIC_OFFSET 4096
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \

@@ -64,6 +64,18 @@ OptionTable<RenderOptions> make_device_table() {
               "ShadowRayEpsilon along the normal, as the course's renderer (its images' shadow "
               "and reflection edges); robust: that plus 8 float ulps of the surface's "
               "coordinates, safe for scenes whose epsilon is small for their size or position")
+      .choice("--camera-rays",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"exact", true}},
+              RT_FIELD(exact_camera_rays),
+              "course: each camera ray's direction formed in world space and float, rounded "
+              "as the course's renderer rounds it (its images' steep gradients need it); "
+              "exact: formed relative to the camera, without that rounding")
+      .choice("--shadow-offset",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"geometric", true}},
+              RT_FIELD(geometric_offset),
+              "which normal a shadow ray's origin moves along by ShadowRayEpsilon: course: the "
+              "shading normal (interpolated on smooth meshes), as the course's renderer; "
+              "geometric: the triangle's own, which never starts it behind the surface")
       .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)

@@ -1,5 +1,7 @@
 #include "flat_scene.h"
 
+#include "course_camera.h"
+
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -15,10 +17,10 @@ namespace rt {
 static_assert(sizeof(float3) == 16 && alignof(float3) == 16, "float3 must match OpenCL");
 static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 128, "Light layout");
-static_assert(sizeof(Camera) == 112, "Camera layout");
+static_assert(sizeof(Camera) == 176, "Camera layout");
 static_assert(sizeof(Instance) == 144, "Instance layout");
 static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
-static_assert(sizeof(SceneHeader) == 208, "SceneHeader layout");
+static_assert(sizeof(SceneHeader) == 272, "SceneHeader layout");
 static_assert(sizeof(TextureDesc) == 96, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
 static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
@@ -149,7 +151,9 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
             (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
             (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0) |
-            (options.robust_offset ? RT_FLAG_ROBUST_OFFSET : 0);
+            (options.robust_offset ? RT_FLAG_ROBUST_OFFSET : 0) |
+            (options.exact_camera_rays ? 0 : RT_FLAG_COURSE_CAMERA) |
+            (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0);
   f.fast_math = options.fast_math;
   if (options.precision == Precision::kAuto)
     throw std::logic_error("--precision auto reached flatten_scene unresolved (resolve_precision)");
@@ -183,6 +187,7 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
   cam.u = to_float3(u);
   cam.v = to_float3(v);
   cam.w = to_float3(w);
+  set_course_camera(cam, c);
   cam.left = static_cast<float>(c.left);
   cam.right = static_cast<float>(c.right);
   cam.bottom = static_cast<float>(c.bottom);

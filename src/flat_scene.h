@@ -37,6 +37,8 @@ struct RenderOptions {
   bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
   bool facing_reflection = false;       // Not the course's reflection offset (mirror.h).
   bool robust_offset = false;           // Spawned rays: scene epsilon plus ulps (cl/ray.h).
+  bool exact_camera_rays = false;       // Not the course's float camera rays (camera.h).
+  bool geometric_offset = false;        // Shadow rays leave along ng, not the course's n.
   bool fast_math = false;               // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.

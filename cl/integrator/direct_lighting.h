@@ -21,8 +21,13 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
                                  RT_PRIVATE const Material* m, LightSample ls,
                                  RT_PRIVATE uint* rays) {
   if (!ls.valid || Dot(s->n, ls.wi) <= 0.0f) return Vec3(0.0f);
-  real3 origin =
-      OffsetRayOrigin(s->p, s->ng, sd->header->shadow_epsilon, s->scale, RT_ROBUST_OFFSET(sd));
+  // The course's renderer offsets the shadow ray along the shading normal (on a smooth mesh
+  // the interpolated one): near a terminator the origin can fall behind the triangle, which
+  // shadows the point, and in a crease it can clear a neighbouring triangle, which lights it;
+  // its images show both (README, "Figures"). --shadow-offset geometric uses the triangle's.
+  real3 along = (sd->header->flags & RT_FLAG_GEOMETRIC_OFFSET) != 0 ? s->ng : s->n;
+  real3 origin = OffsetRayOrigin(s->p, along, sd->header->shadow_epsilon, s->scale,
+                                 RT_ROBUST_OFFSET(sd));
   if (!Unoccluded(sd, origin, ls.p_light - origin, s->time, rays)) return Vec3(0.0f);
   return EvaluateBsdf(sd, m, s->n, s->wo, ls.wi, ls.irradiance);
 }

@@ -1,0 +1,81 @@
+// Conventions of the course's renderer that its images show to the level of single pixels
+// (README, "Figures"): the ray offset is the scene's epsilon alone, and a shadow ray leaves
+// along the shading normal. The course's float camera rays are checked by the reference
+// tests (tests/course_scenes.txt), whose thresholds they raised.
+#include <gtest/gtest.h>
+
+#include "cl/ray.h"
+#include "flat_scene.h"
+#include "support/device_harness.h"
+#include "support/test_scene.h"
+
+namespace rt {
+namespace {
+
+TEST(CourseOffset, IsTheSceneEpsilonAloneWhenItExceedsTheRelativeTerm) {
+  // The relative term of a point computed from vertices 100 units away is 9.5e-5, below the
+  // epsilon: the origin moves by exactly the epsilon, as in the course's renderer.
+  float3 q = OffsetRayOrigin(make_float3(0, 0, 0), make_float3(0, 1, 0), 1e-3f, 100.0f);
+  EXPECT_EQ(q.y, 1e-3f);
+  // Far away the relative term, 8 float ulps of the scale, takes over.
+  const float scale = 1e6f, relative = 8.0f / 8388608.0f * scale;
+  q = OffsetRayOrigin(make_float3(0, 0, 0), make_float3(0, 1, 0), 1e-3f, scale);
+  EXPECT_EQ(q.y, relative);
+}
+
+Material Diffuse() {
+  Material m{};
+  m.diffuse = make_float3(1, 1, 1);
+  m.phong_exponent = 1;
+  m.refraction_index = 1;
+  return m;
+}
+
+// The floor point at the origin of a smooth mesh whose shading normal there leans towards
+// +x (a steep wall shares the vertex at (1, 1, 0)), seen from above, lit by a point light
+// at (0, 3, 3). A small blocker at y = 0.3 lies across the shadow segment that leaves along
+// the geometric normal (x = 0) but not across the one that leaves along the shading normal
+// (x = 0.026 (1 - s) with the epsilon 0.1).
+SceneDesc LeaningNormalScene() {
+  SceneDesc s;
+  s.cameras.push_back(test::PointCamera({0, 0, 5}, 1));
+  s.materials.push_back(Diffuse());
+  s.shadow_epsilon = 0.1;
+  MeshDesc tent;
+  tent.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {1.5, 0, 2}};
+  tent.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 2, 4}};
+  tent.smooth = true;
+  MeshDesc blocker;
+  blocker.positions = {{-0.05, 0.3, 0.2}, {0.01, 0.3, 0.2}, {0.01, 0.3, 0.6}};
+  blocker.triangles = {{0, 1, 2}};
+  s.meshes = {tent, blocker};
+  for (int mesh = 0; mesh < 2; ++mesh) {
+    ObjectDesc o;
+    o.mesh = mesh;
+    s.objects.push_back(o);
+  }
+  s.point_lights.push_back({{0, 3, 3}, make_float3(100, 100, 100)});
+  return s;
+}
+
+double RenderRed(const SceneDesc& s, bool geometric_offset) {
+  RenderOptions opt;
+  opt.geometric_offset = geometric_offset;
+  FlatScene flat = flatten_scene(s, opt);
+  set_camera(flat, s, 0, opt);
+  RenderResult r = test::render_cpu(flat, 1);
+  return r.accum[0].sum.x / r.accum[0].sum.w;
+}
+
+TEST(CourseShadowOffset, LeavesAlongTheShadingNormal) {
+  const SceneDesc s = LeaningNormalScene();
+  // Shading normal at the origin: halfway between (0, 0, 1) and the wall vertex's
+  // area-weighted normal (4, 0, 7) / |.|; lit, the pixel is I / d^2 * n.wi.
+  const double nc = std::sqrt(65.0), nx = 0.5 * 4 / nc, nz = 0.5 + 0.5 * 7 / nc;
+  const double cos_i = (nz * 3 / std::sqrt(18.0)) / std::sqrt(nx * nx + nz * nz);
+  EXPECT_NEAR(RenderRed(s, false), 100.0 / 18.0 * cos_i, 1e-4);
+  EXPECT_EQ(RenderRed(s, true), 0.0);  // --shadow-offset geometric: the blocker shadows it.
+}
+
+}  // namespace
+}  // namespace rt
