@@ -22,16 +22,35 @@ typedef struct SurfacePoint {
   Hit hit;    // The hit it was built from: textures rebuild their frame from it.
 } SurfacePoint;
 
+// The parts of a surface point ComputeSurfaceParts builds; the hit, the material and the
+// time are always there, and a part left out stays zero. Shading that reads less than the
+// whole point (a last hit lit by the ambient term alone, see Li) asks for less.
+#define RT_SURFACE_NORMALS 1  // n, ng, wo and front.
+#define RT_SURFACE_POINT 2    // p and scale.
+#define RT_SURFACE_ALL (RT_SURFACE_NORMALS | RT_SURFACE_POINT)
+
 // The position is rebuilt from the primitive (barycentrics on a triangle, a projection
 // onto the unit sphere) rather than from origin + t * direction, so its error does not
-// grow with the distance travelled.
-RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit) {
+// grow with the distance travelled. Each part is computed as in the whole point, so a part
+// is the same to the bit whatever else is asked.
+// The ray and hit come by pointer: passed by value, both are copied at every call.
+RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd,
+                                           RT_PRIVATE const Ray* ray_in,
+                                           RT_PRIVATE const Hit* hit_in, int parts) {
+  Ray ray = *ray_in;
+  Hit hit = *hit_in;
   RT_GLOBAL const Instance* inst = &sd->instances[hit.instance];
   int transformed =
       RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0;
+  int want_point = (parts & RT_SURFACE_POINT) != 0,
+      want_normals = (parts & RT_SURFACE_NORMALS) != 0;
   SurfacePoint sp;
   sp.material = inst->material;
-  real3 p_obj, ng_obj, n_obj;
+  sp.time = ray.time;
+  sp.hit = hit;
+  real3 p_obj = Vec3(0.0f), ng_obj = Vec3(0.0f), n_obj = Vec3(0.0f);
+  // Only smooth meshes interpolate a shading normal; elsewhere n is ng.
+  int interpolated = 0;
   real mag = 1.0f;  // Object-space magnitude: the unit sphere, or the triangle's vertices.
   if (hit.primitive < 0) {
     real3 o = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
@@ -42,48 +61,64 @@ RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, H
     }
     p_obj = Normalize(o + d * hit.t);
     ng_obj = p_obj;
-    n_obj = p_obj;
   } else {
     RT_GLOBAL const Triangle* tri = &sd->triangles[hit.primitive];
     real b0 = 1.0f - hit.b1 - hit.b2;
     real3 v0 = ToReal3(tri->v0), v1 = ToReal3(tri->v1), v2 = ToReal3(tri->v2);
-    p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
-    mag = MaxF(MaxComponent(Abs3(v0)), MaxF(MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))));
-    ng_obj = Cross(v1 - v0, v2 - v0);
-    n_obj = ng_obj;
-    if (RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0) {
-      RT_GLOBAL const TriangleNormals* tn = &sd->normals[hit.primitive];
-      n_obj = ToReal3(tn->n0) * b0 + ToReal3(tn->n1) * hit.b1 + ToReal3(tn->n2) * hit.b2;
+    if (want_point) {
+      p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
+      mag = MaxF(MaxComponent(Abs3(v0)), MaxF(MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))));
+    }
+    if (want_normals) {
+      ng_obj = Cross(v1 - v0, v2 - v0);
+      interpolated = RT_HAS(sd, RT_FEATURE_SMOOTH) && (inst->flags & RT_INSTANCE_SMOOTH) != 0;
+      if (interpolated) {
+        RT_GLOBAL const TriangleNormals* tn = &sd->normals[hit.primitive];
+        n_obj = ToReal3(tn->n0) * b0 + ToReal3(tn->n1) * hit.b1 + ToReal3(tn->n2) * hit.b2;
+      }
     }
   }
-  sp.scale = mag;
-  if (transformed) {
-    // A bound on the world-space coordinates of points of magnitude `mag`.
-    RT_GLOBAL const float4* o2w = inst->object_to_world;
-    real lin = 0.0f, shift = 0.0f;
-    for (int r = 0; r < 3; ++r) {
-      lin = MaxF(lin, fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z));
-      shift = MaxF(shift, fabs(o2w[r].w));
-    }
-    sp.scale = lin * mag + shift;
-    sp.p = TransformPoint(inst->object_to_world, p_obj);
-    sp.ng = Normalize(TransformNormalByInverse(inst->world_to_object, ng_obj));
-    sp.n = Normalize(TransformNormalByInverse(inst->world_to_object, n_obj));
-  } else {
+  sp.p = Vec3(0.0f);
+  sp.scale = 0.0f;
+  if (want_point) {
+    sp.scale = mag;
     sp.p = p_obj;
-    sp.ng = Normalize(ng_obj);
-    sp.n = Normalize(n_obj);
+    if (transformed) {
+      // A bound on the world-space coordinates of points of magnitude `mag`.
+      RT_GLOBAL const float4* o2w = inst->object_to_world;
+      real lin = 0.0f, shift = 0.0f;
+      for (int r = 0; r < 3; ++r) {
+        lin = MaxF(lin, fabs(o2w[r].x) + fabs(o2w[r].y) + fabs(o2w[r].z));
+        shift = MaxF(shift, fabs(o2w[r].w));
+      }
+      sp.scale = lin * mag + shift;
+      sp.p = TransformPoint(inst->object_to_world, p_obj);
+    }
+    if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0) {
+      real3 motion = ToReal3(inst->motion);
+      sp.p = sp.p + motion * ray.time;
+      sp.scale = sp.scale + MaxComponent(Abs3(motion)) * ray.time;
+    }
   }
-  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0) {
-    real3 motion = ToReal3(inst->motion);
-    sp.p = sp.p + motion * ray.time;
-    sp.scale = sp.scale + MaxComponent(Abs3(motion)) * ray.time;
+  sp.ng = sp.n = sp.wo = Vec3(0.0f);
+  sp.front = 0;
+  if (want_normals) {
+    if (transformed) {
+      sp.ng = Normalize(TransformNormalByInverse(inst->world_to_object, ng_obj));
+      sp.n =
+          interpolated ? Normalize(TransformNormalByInverse(inst->world_to_object, n_obj)) : sp.ng;
+    } else {
+      sp.ng = Normalize(ng_obj);
+      sp.n = interpolated ? Normalize(n_obj) : sp.ng;
+    }
+    sp.wo = Normalize(-ray.direction);
+    sp.front = Dot(sp.wo, sp.ng) > 0.0f;
   }
-  sp.wo = Normalize(-ray.direction);
-  sp.front = Dot(sp.wo, sp.ng) > 0.0f;
-  sp.time = ray.time;
-  sp.hit = hit;
   return sp;
+}
+
+RT_DEVICE SurfacePoint ComputeSurface(RT_PRIVATE const SceneData* sd, Ray ray, Hit hit) {
+  return ComputeSurfaceParts(sd, &ray, &hit, RT_SURFACE_ALL);
 }
 
 // Turns the normals to the side wo is on: scattering (unlike direct light, see Li) treats

@@ -86,7 +86,7 @@ TEST(GeometryTransform, EllipsoidNormalsThroughScenePath) {
       Vec3d o = c.centre + normalize({g(rng), g(rng), g(rng)}) * 6.0;
       Vec3d aim = c.centre + c.rotation.vector({1.9 * u(rng), 0.9 * u(rng), 0.9 * u(rng)});
       Ray ray = MakeRay(F3(o), F3(aim - o), kInf, 0);
-      Hit hit;
+      Hit hit{};  // A sphere hit leaves b1 and b2 unset.
       if (!IntersectScene(&sd, ray, 0, 0, &hit)) continue;
       ++hits;
       SurfacePoint sp = ComputeSurface(&sd, ray, hit);

@@ -48,6 +48,8 @@ RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
                                RT_PRIVATE const Material* m, RaySampler rs, RT_PRIVATE uint* rays) {
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return ToReal3(m->diffuse);
   real3 ambient = ToReal3(m->ambient * sd->header->ambient_light);
+  // Without lights, the ambient term alone: not even the light context is made.
+  if (sd->header->num_lights == 0) return ambient;
   int blinn_phong = !RT_HAS(sd, RT_FEATURE_BRDF) || m->brdf == RT_BRDF_ORIGINAL_BLINN_PHONG;
   if (blinn_phong && BlinnPhongIsBlack(m)) return ambient;
   return AddLightSamples(sd, s, m, rs, ambient, rays);

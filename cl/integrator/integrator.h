@@ -17,18 +17,32 @@
 #include "primary_info.h"
 #include "ray_tree.h"
 
-// Radiance along a camera ray through the film at pixel_uv (where a background texture is
-// looked up); *rays counts every ray cast (camera, secondary, shadow).
+// What shading reads of the surface point of `hit` (RT_SURFACE_* parts). A last hit (no ray
+// continues from it) in a scene without lights, textures or emitters is lit by the ambient
+// term alone, which reads the material only; it needs the normals where the primary-hit
+// facts are recorded (`record`) or where a transmissive surface must know its side.
+RT_DEVICE int SurfacePartsRead(RT_PRIVATE const SceneData* sd, RT_PRIVATE const RayTask* task,
+                               int max_depth, Hit hit, int record) {
+  if (task->depth < max_depth || sd->header->num_lights > 0 ||
+      RT_HAS(sd, RT_FEATURE_TEXTURES | RT_FEATURE_OBJECT_LIGHTS))
+    return RT_SURFACE_ALL;
+  int material = sd->instances[hit.instance].material;
+  if (record || IsTransmissiveType(sd, sd->materials[material].type)) return RT_SURFACE_NORMALS;
+  return 0;
+}
+
+// Radiance along the camera ray of `cs` through the film at pixel_uv (where a background
+// texture is looked up); *rays counts every ray cast (camera, secondary, shadow).
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
 // evaluate the material, add direct light, scatter.
-RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, real2 pixel_uv,
-                   RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
+RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraSample* cs,
+                   real2 pixel_uv, RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
   RayStack stack;
   stack.size = 0;
   // The camera ray is the first task; later ones come from the stack (NextRay).
-  RayTask task = MakeTask(camera_ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0);
+  RayTask task = MakeTask(cs->ray, Vec3(1.0f), Vec3(0.0f), RT_DIM_FIRST_FREE, 0, 0);
   real3 radiance = Vec3(0.0f);
   RecordPrimaryMiss(info);
   do {
@@ -40,14 +54,16 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray,
         radiance += task.weight * EscapedRadiance(sd, task.ray.direction, pixel_uv);
       continue;
     }
-    SurfacePoint s = ComputeSurface(sd, task.ray, hit);
-    if (task.depth == 0) RecordPrimaryHit(info, hit, s.n);
+    int record = info != 0 && task.depth == 0;
+    SurfacePoint s = ComputeSurfaceParts(sd, &task.ray, &hit,
+                                         SurfacePartsRead(sd, &task, max_depth, hit, record));
+    if (record) RecordPrimaryHit(info, hit, s.n);
     if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && task.inside)
       task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction));
     // An object light seen by this ray (a camera ray, or one a mirror or glass continued).
     if (RT_HAS(sd, RT_FEATURE_OBJECT_LIGHTS)) radiance += task.weight * EmittedRadiance(sd, &s);
     Material m = EvaluateMaterial(sd, &s);
-    RaySampler rs = MakeRaySampler(sk, task.key, task.depth == 0);
+    RaySampler rs = MakeRaySampler(cs->key, task.key, task.depth == 0);
     // Opaque surfaces are shaded with the normal as modelled, also when seen from behind,
     // as the course's renderer does: thin sheets such as grass blades are lit from either
     // side. No light reaches the inner side of a dielectric directly.
@@ -76,7 +92,7 @@ RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ca
   if (RT_HAS(sd, RT_FEATURE_PATH_TRACING) && (h->flags & RT_FLAG_PATH_TRACING) != 0)
     return PathLi(sd, cs.key, cs.ray, cp->uv, info, rays);
 #endif
-  return Li(sd, cs.key, cs.ray, cp->uv, info, rays);
+  return Li(sd, &cs, cp->uv, info, rays);
 }
 
 #endif  // RT_INTEGRATOR_H

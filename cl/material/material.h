@@ -46,8 +46,12 @@ RT_DEVICE real3 EvaluateBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ma
 }
 
 // 1 for materials light passes through: no light reaches their inner side directly.
+RT_DEVICE int IsTransmissiveType(RT_PRIVATE const SceneData* sd, int type) {
+  return RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && type == RT_MATERIAL_DIELECTRIC;
+}
+
 RT_DEVICE int IsTransmissive(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m) {
-  return RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC;
+  return IsTransmissiveType(sd, m->type);
 }
 
 // Pushes the rays the material sends on from s (facing the incoming ray); plain
