@@ -28,6 +28,7 @@
 
 #include "cl/camera.h"
 #include "cl/intersect.h"
+#include "device/cpu_kernel.h"
 #include "errors.h"
 #include "flat_scene.h"
 #include "scene.h"
@@ -128,11 +129,13 @@ RTCScene EmbreeScene(RTCDevice device, const rt::SceneDesc& scene, rt::Vec3d eye
 // One tracer: fills t[i] with the hit distance of ray i (infinity for a miss).
 using Tracer = std::function<void(const RaySet&, std::vector<float>&)>;
 
+// The renderer's own choice of kernel (AVX2 where the CPU has it; device/cpu_kernel.h).
 void TraceOurs(const rt::FlatScene& flat, const RaySet& set, std::vector<float>& t) {
   SceneData sd = flat.view();
+  const rt::CpuTraceFunction intersect = rt::select_cpu_kernel(false).intersect_closest;
   for (size_t i = 0; i < set.rays.size(); ++i) {
     Hit hit;
-    t[i] = IntersectClosest(&sd, set.rays[i], 0, &hit) ? hit.t : INFINITY;
+    t[i] = intersect(&sd, &set.rays[i], &hit) ? hit.t : INFINITY;
   }
 }
 

@@ -120,9 +120,12 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   int sp = 0;
   int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
   int instance = -1;                // The instance whose BVH we are in, or -1 at the top level.
-  real3 o = ray.origin, d = ray.direction;
-  NodeRay nr = MakeNodeRay(o, d);
-  TriangleRay tr = MakeTriangleRay(o, d);
+  // The world's ray is set up once; an instance's ray replaces it while the traversal is
+  // inside the instance, and the pointers switch back on return.
+  NodeRay world_nr = MakeNodeRay(ray.origin, ray.direction), object_nr;
+  TriangleRay world_tr = MakeTriangleRay(ray.origin, ray.direction), object_tr;
+  RT_PRIVATE const NodeRay* nr = &world_nr;
+  RT_PRIVATE const TriangleRay* tr = &world_tr;
   real tmax = ray.tmax;
   hit->instance = -1;
   hit->t = tmax;
@@ -130,7 +133,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   for (;;) {
     int next = RT_BVH_POP;
     if (ref >= 0) {
-      next = VisitChildren(&sd->nodes[ref], &nr, tmax, stack, &sp);
+      next = VisitChildren(&sd->nodes[ref], nr, tmax, stack, &sp);
     } else if (instance < 0) {
       // A top-level leaf: exactly one instance.
       int ii = RtLeafFirst(ref);
@@ -152,10 +155,10 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
         }
       } else if (RT_HAS(sd, RT_FEATURE_TRIANGLES)) {
         instance = ii;
-        o = io;
-        d = id;
-        nr = MakeNodeRay(o, d);
-        tr = MakeTriangleRay(o, d);
+        object_nr = MakeNodeRay(io, id);
+        object_tr = MakeTriangleRay(io, id);
+        nr = &object_nr;
+        tr = &object_tr;
         stack[sp++] = RT_STACK_RETURN_TO_WORLD;
         next = inst->blas_root;
       }
@@ -164,7 +167,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       for (int i = first; i < end; ++i) {
         RT_GLOBAL const Triangle* tri = &sd->triangles[i];
         real t, b1, b2;
-        if (IntersectTriangle(&tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull,
+        if (IntersectTriangle(tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull,
                               &t, &b1, &b2)) {
           tmax = t;
           hit->t = t;
@@ -181,10 +184,8 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       next = stack[--sp];
       if (next == RT_STACK_RETURN_TO_WORLD) {
         instance = -1;
-        o = ray.origin;
-        d = ray.direction;
-        nr = MakeNodeRay(o, d);
-        tr = MakeTriangleRay(o, d);
+        nr = &world_nr;
+        tr = &world_tr;
         next = RT_BVH_POP;
       }
     }

@@ -12,6 +12,10 @@ typedef struct TriangleRay {
   real3 origin;
   int kx, ky, kz;
   real sx, sy, sz;
+#ifndef RT_REAL_DOUBLE
+  Quad origin_quad;  // The origin and (kx, ky, kz) as vector lanes for TrianglePoint.
+  QuadIndex axes;
+#endif
 } TriangleRay;
 
 RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
@@ -30,7 +34,23 @@ RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
   tr.sx = Component(dir, tr.kx) / dz;
   tr.sy = Component(dir, tr.ky) / dz;
   tr.sz = 1.0f / dz;
+#ifndef RT_REAL_DOUBLE
+  tr.origin_quad = QuadFrom3(origin);
+  tr.axes = QuadIndexOf(tr.kx, tr.ky, tr.kz, 3);
+#endif
   return tr;
+}
+
+// A vertex relative to the ray's origin, its axes permuted to (kx, ky, kz). In float the
+// subtraction and the permutation are vector operations, lane by lane the same roundings
+// as the scalar form used in double (where the vertex is widened first).
+RT_DEVICE real3 TrianglePoint(RT_PRIVATE const TriangleRay* tr, real3 p) {
+#ifdef RT_REAL_DOUBLE
+  return Permute3(p - tr->origin, tr->kx, tr->ky, tr->kz);
+#else
+  Quad q = QuadPermute(QuadFrom3(p) - tr->origin_quad, tr->axes);
+  return make_real3(QuadLane(q, 0), QuadLane(q, 1), QuadLane(q, 2));
+#endif
 }
 
 // Returns 1 and sets *t, *b1, *b2 when the ray hits the triangle with 0 < t < tmax.
@@ -40,9 +60,9 @@ RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
 RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, real3 p0, real3 p1, real3 p2,
                                 real tmax, int cull, RT_PRIVATE real* t, RT_PRIVATE real* b1,
                                 RT_PRIVATE real* b2) {
-  real3 a = Permute3(p0 - tr->origin, tr->kx, tr->ky, tr->kz);
-  real3 b = Permute3(p1 - tr->origin, tr->kx, tr->ky, tr->kz);
-  real3 c = Permute3(p2 - tr->origin, tr->kx, tr->ky, tr->kz);
+  real3 a = TrianglePoint(tr, p0);
+  real3 b = TrianglePoint(tr, p1);
+  real3 c = TrianglePoint(tr, p2);
   real ax = a.x - tr->sx * a.z, ay = a.y - tr->sy * a.z;
   real bx = b.x - tr->sx * b.z, by = b.y - tr->sy * b.z;
   real cx = c.x - tr->sx * c.z, cy = c.y - tr->sy * c.z;

@@ -3,6 +3,9 @@
 // element-wise operators, comparisons that yield -1 / 0 per lane, and `mask ? a : b`
 // selection, which the compiler maps to SSE (or AVX where enabled). The node test is thus
 // written once, in operators both languages share, and rounds the same on both devices.
+// `Quad` is four float lanes for the triangle test's data movement (QuadPermute: a
+// shuffle by lane indices known only at run time, one `vpermilps` with AVX); moving
+// values never rounds them.
 #ifndef RT_SIMD_H
 #define RT_SIMD_H
 
@@ -27,6 +30,12 @@ typedef int8 LaneInt;
 #define LaneStoreI(v, p) vstore8((v), 0, (p))
 #endif
 #define RT_ALIGN_NODE __attribute__((aligned(64)))
+typedef float4 Quad;
+typedef uint4 QuadIndex;
+#define QuadFrom3(v) ((float4)((v), 0.0f))
+#define QuadPermute(v, index) shuffle((v), (index))
+#define QuadIndexOf(a, b, c, d) ((uint4)((uint)(a), (uint)(b), (uint)(c), (uint)(d)))
+#define QuadLane(v, i) ((v).s##i)
 
 #else  // C++17
 
@@ -38,6 +47,24 @@ inline void LaneStoreF(LaneFloat v, float* p) { std::memcpy(p, &v, sizeof v); }
 inline void LaneStoreI(LaneInt v, int* p) { std::memcpy(p, &v, sizeof v); }
 // Whole nodes on cache lines; OpenCL buffers are aligned at least as well.
 #define RT_ALIGN_NODE alignas(64)
+
+typedef float Quad __attribute__((vector_size(16)));
+typedef int QuadIndex __attribute__((vector_size(16)));
+// A float3 is laid out as four floats (cl/compat.h); the fourth lane is never read.
+inline Quad QuadFrom3(float3 v) {
+  Quad q;
+  std::memcpy(&q, &v, sizeof q);
+  return q;
+}
+#ifdef __clang__  // Clang has no run-time-index shuffle builtin; lanes read by index instead.
+inline Quad QuadPermute(Quad v, QuadIndex index) {
+  return Quad{v[index[0]], v[index[1]], v[index[2]], v[index[3]]};
+}
+#else
+#define QuadPermute(v, index) __builtin_shuffle((v), (index))
+#endif
+inline QuadIndex QuadIndexOf(int a, int b, int c, int d) { return QuadIndex{a, b, c, d}; }
+#define QuadLane(v, i) ((v)[i])
 
 #endif
 

@@ -157,6 +157,9 @@ OptionTable<CliOptions> make_raytracer_table() {
   t.add_env("RT_CL_OPTIONS",
             "extra OpenCL build options appended to the kernel's (a developer's knob, e.g. "
             "-cl-opt-disable); part of the kernel cache key");
+  t.add_env("RT_CPU_ISA",
+            "baseline: the CPU reference runs its baseline x86-64 build even where the CPU has "
+            "AVX2 (by default the AVX2 build is chosen at run time; the image is the same)");
   t.add_env("XDG_CACHE_HOME",
             "the compiled-kernel cache is $XDG_CACHE_HOME/raytracer/kernels (when absolute)");
   t.add_env("HOME", "without XDG_CACHE_HOME, the cache is $HOME/.cache/raytracer/kernels");

@@ -35,8 +35,7 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   const int width = flat_->header.camera.width;
   const size_t first = static_cast<size_t>(work.row_begin) * width;
   const size_t count = static_cast<size_t>(work.rows()) * width;
-  const CpuPixelFunction accumulate =
-      flat_->double_precision ? accumulate_pixel_double : accumulate_pixel_float;
+  const CpuPixelFunction accumulate = select_cpu_kernel(flat_->double_precision).accumulate;
   // Threads take chunks of pixels, not rows, so a pass over a band of a few rows still
   // keeps every thread busy to its end. Each pixel is taken by one thread, which adds its
   // samples in order: the image does not depend on the thread count.
