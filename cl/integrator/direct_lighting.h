@@ -44,13 +44,20 @@ RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
   return l;
 }
 
-// The ray tree's shading: ambient plus the lights.
+// The ray tree's shading: ambient plus the lights. A surface whose Blinn-Phong is black
+// (a mirror, metal or glass lit only through the rays it scatters) would add an exact zero
+// per light sample, so it takes no samples and casts no shadow rays: the image is the same
+// to the bit (a sample of infinite irradiance, which would turn the sample into NaN and drop
+// it, is the one exception: a point light closer than about 1e-17), and hw3's tap and
+// metal_glass_plates cast far fewer rays. Random numbers are keyed, so no other draw moves.
 RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
                                RT_PRIVATE const Material* m, RaySampler rs, RT_PRIVATE uint* rays) {
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return ToReal3(m->diffuse);
   real3 ambient = ToReal3(m->ambient * sd->header->ambient_light);
   // Without lights, the ambient term alone: not even the light context is made.
   if (sd->header->num_lights == 0) return ambient;
+  int blinn_phong = !RT_HAS(sd, RT_FEATURE_BRDF) || m->brdf == RT_BRDF_ORIGINAL_BLINN_PHONG;
+  if (blinn_phong && BlinnPhongIsBlack(m)) return ambient;
   return AddLightSamples(sd, s, m, rs, ambient, rays);
 }
 

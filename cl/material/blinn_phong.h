@@ -17,4 +17,12 @@ RT_DEVICE real3 BlinnPhong(RT_PRIVATE const Material* m, real3 n, real3 wo, real
   return (ToReal3(m->diffuse) * cos_i + ToReal3(m->specular) * spec) * e;
 }
 
+// 1 when BlinnPhong gives exactly zero for every light: black diffuse and specular
+// reflectances, as the course's mirrors, metals and glass often have (their light is in the
+// rays they scatter). cos_i and the specular term are finite, so each product is +0.
+RT_DEVICE int BlinnPhongIsBlack(RT_PRIVATE const Material* m) {
+  return m->diffuse.x == 0.0f && m->diffuse.y == 0.0f && m->diffuse.z == 0.0f &&
+         m->specular.x == 0.0f && m->specular.y == 0.0f && m->specular.z == 0.0f;
+}
+
 #endif  // RT_MATERIAL_BLINN_PHONG_H
