@@ -1,5 +1,6 @@
 #include "course_camera.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rt {
@@ -42,6 +43,19 @@ void set_course_camera(Camera& cam, const CameraDesc& c) {
   cam.course_q = make_float3(q.x, q.y, q.z);
   cam.course_u = make_float3(uf.x, uf.y, uf.z);
   cam.course_v = make_float3(vf.x, vf.y, vf.z);
+}
+
+bool course_camera_is_faithful(const CameraDesc& c) {
+  Camera cam{};
+  set_course_camera(cam, c);
+  double magnitude = 0.0;
+  for (float x : {cam.course_eye.x, cam.course_eye.y, cam.course_eye.z, cam.course_q.x,
+                  cam.course_q.y, cam.course_q.z})
+    magnitude = std::max(magnitude, std::fabs(static_cast<double>(x)));
+  const double spacing = magnitude * std::ldexp(1.0, -23);  // At most one float ulp there.
+  const double pixel = std::min(std::fabs(c.right - c.left) / c.width,
+                                std::fabs(c.top - c.bottom) / c.height);
+  return spacing < pixel / 20.0;
 }
 
 }  // namespace rt

@@ -152,7 +152,6 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
             (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0) |
             (options.robust_offset ? RT_FLAG_ROBUST_OFFSET : 0) |
-            (options.exact_camera_rays ? 0 : RT_FLAG_COURSE_CAMERA) |
             (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0);
   f.fast_math = options.fast_math;
   if (options.precision == Precision::kAuto)
@@ -201,8 +200,10 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
   cam.samples = options.spp > 0 ? options.spp : c.samples;
   int root = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cam.samples))));
   cam.strata = root * root == cam.samples ? root : 0;
-  flat.header.flags = (flat.header.flags & ~RT_FLAG_PATH_MASK) |
-                      (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0);
+  const bool course_camera = !options.exact_camera_rays && course_camera_is_faithful(c);
+  flat.header.flags = (flat.header.flags & ~(RT_FLAG_PATH_MASK | RT_FLAG_COURSE_CAMERA)) |
+                      (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0) |
+                      (course_camera ? RT_FLAG_COURSE_CAMERA : 0);
   flat.header.features = scene_features(scene, camera, options);
 }
 
