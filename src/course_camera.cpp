@@ -53,8 +53,8 @@ bool course_camera_is_faithful(const CameraDesc& c) {
                   cam.course_q.y, cam.course_q.z})
     magnitude = std::max(magnitude, std::fabs(static_cast<double>(x)));
   const double spacing = magnitude * std::ldexp(1.0, -23);  // At most one float ulp there.
-  const double pixel = std::min(std::fabs(c.right - c.left) / c.width,
-                                std::fabs(c.top - c.bottom) / c.height);
+  const double pixel =
+      std::min(std::fabs(c.right - c.left) / c.width, std::fabs(c.top - c.bottom) / c.height);
   return spacing < pixel / 20.0;
 }
 

@@ -1,15 +1,42 @@
 // Conventions of the course's renderer that its images show to the level of single pixels
 // (README, "Figures"): a shadow ray leaves along the shading normal. The ray offset of the
-// epsilon alone is checked in ray_offset_test. The course's float camera rays are checked by the reference
-// tests (tests/course_scenes.txt), whose thresholds they raised.
+// epsilon alone is checked in ray_offset_test. The course's float camera rays are checked by
+// the reference tests (tests/course_scenes.txt), whose thresholds they raised; here, where
+// they stop being used.
 #include <gtest/gtest.h>
 
+#include "course_camera.h"
 #include "flat_scene.h"
 #include "support/device_harness.h"
 #include "support/test_scene.h"
 
 namespace rt {
 namespace {
+
+// A camera with a film pixel 1.406e-3 wide at distance 1, placed where grass_desert's is
+// (368 units out: float's spacing bound 368 * 2^-23 = 4.4e-5, 1/32 of a pixel), keeps the
+// course's rays; 1e5 units out (0.012, 8.5 pixels) it keeps the camera-relative ones.
+TEST(CourseCamera, IsUsedOnlyWhereFloatResolvesTheFilm) {
+  CameraDesc c;
+  c.position = {-367.6, 0.35, 162.9};
+  c.gaze = {1, 0, 0};
+  c.up = {0, 1, 0};
+  c.left = -1.35;
+  c.right = 1.35;
+  c.bottom = -0.76;
+  c.top = 0.76;
+  c.width = 1920;
+  c.height = 1080;
+  EXPECT_TRUE(course_camera_is_faithful(c));
+  c.position = {1e5, 0.35, 162.9};
+  EXPECT_FALSE(course_camera_is_faithful(c));
+  // The bound is a twentieth of a pixel, reached 590 units out for this film: 2,100 units
+  // (2.5e-4, 1/5.6 of a pixel) fail, 300 units (3.6e-5, 1/39) pass.
+  c.position = {2100, 0, 0};
+  EXPECT_FALSE(course_camera_is_faithful(c));
+  c.position = {300, 0, 0};
+  EXPECT_TRUE(course_camera_is_faithful(c));
+}
 
 Material Diffuse() {
   Material m{};
