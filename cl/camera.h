@@ -39,19 +39,24 @@ RT_DEVICE real3 CourseCameraDirection(RT_GLOBAL const Camera* cam, real px, real
   return make_real3(d.x / len, d.y / len, d.z / len);
 }
 
+// The direction of the camera ray through film position (px, py), formed relative to the
+// camera: subtracting its position from an absolute film point would cancel away the
+// film's detail far from the origin.
+RT_DEVICE real3 ExactCameraDirection(RT_GLOBAL const Camera* cam, real px, real py) {
+  real su = (cam->right - cam->left) * (px / (real)cam->width);
+  real sv = (cam->top - cam->bottom) * (py / (real)cam->height);
+  real3 film = ToReal3(cam->u) * (cam->left + su) + ToReal3(cam->v) * (cam->top - sv) -
+               ToReal3(cam->w) * cam->near_distance;
+  return Normalize(film);
+}
+
 // The ray through film position (px, py) in pixels (x right, y down) at shutter time
 // `time`, through lens sample `lens` in [0,1)^2.
 RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real px, real py, real2 lens,
                                 real time) {
   RT_GLOBAL const Camera* cam = &sd->header->camera;
-  real su = (cam->right - cam->left) * (px / (real)cam->width);
-  real sv = (cam->top - cam->bottom) * (py / (real)cam->height);
-  // Relative to the camera: subtracting its position from an absolute film point would
-  // cancel away the film's detail far from the origin.
-  real3 film = ToReal3(cam->u) * (cam->left + su) + ToReal3(cam->v) * (cam->top - sv) -
-               ToReal3(cam->w) * cam->near_distance;
   real3 dir = (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0 ? CourseCameraDirection(cam, px, py)
-                                                               : Normalize(film);
+                                                               : ExactCameraDirection(cam, px, py);
   Ray ray = MakeRay(ToReal3(cam->position), dir, RT_INFINITY, time);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {
     // The focal plane lies focus_distance along the gaze; every lens point aims at where

@@ -45,9 +45,7 @@ void set_course_camera(Camera& cam, const CameraDesc& c) {
   cam.course_v = make_float3(vf.x, vf.y, vf.z);
 }
 
-bool course_camera_is_faithful(const CameraDesc& c) {
-  Camera cam{};
-  set_course_camera(cam, c);
+bool course_camera_is_faithful(const Camera& cam, const CameraDesc& c) {
   double magnitude = 0.0;
   for (float x : {cam.course_eye.x, cam.course_eye.y, cam.course_eye.z, cam.course_q.x,
                   cam.course_q.y, cam.course_q.z})

@@ -200,7 +200,7 @@ void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const Rende
   cam.samples = options.spp > 0 ? options.spp : c.samples;
   int root = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cam.samples))));
   cam.strata = root * root == cam.samples ? root : 0;
-  const bool course_camera = !options.exact_camera_rays && course_camera_is_faithful(c);
+  const bool course_camera = !options.exact_camera_rays && course_camera_is_faithful(cam, c);
   flat.header.flags = (flat.header.flags & ~(RT_FLAG_PATH_MASK | RT_FLAG_COURSE_CAMERA)) |
                       (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0) |
                       (course_camera ? RT_FLAG_COURSE_CAMERA : 0);

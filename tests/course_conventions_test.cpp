@@ -13,6 +13,12 @@
 namespace rt {
 namespace {
 
+bool Faithful(const CameraDesc& c) {
+  Camera cam{};
+  set_course_camera(cam, c);
+  return course_camera_is_faithful(cam, c);
+}
+
 // A camera with a film pixel 1.406e-3 wide at distance 1, placed where grass_desert's is
 // (368 units out: float's spacing bound 368 * 2^-23 = 4.4e-5, 1/32 of a pixel), keeps the
 // course's rays; 1e5 units out (0.012, 8.5 pixels) it keeps the camera-relative ones.
@@ -27,15 +33,15 @@ TEST(CourseCamera, IsUsedOnlyWhereFloatResolvesTheFilm) {
   c.top = 0.76;
   c.width = 1920;
   c.height = 1080;
-  EXPECT_TRUE(course_camera_is_faithful(c));
+  EXPECT_TRUE(Faithful(c));
   c.position = {1e5, 0.35, 162.9};
-  EXPECT_FALSE(course_camera_is_faithful(c));
+  EXPECT_FALSE(Faithful(c));
   // The bound is a twentieth of a pixel, reached 590 units out for this film: 2,100 units
   // (2.5e-4, 1/5.6 of a pixel) fail, 300 units (3.6e-5, 1/39) pass.
   c.position = {2100, 0, 0};
-  EXPECT_FALSE(course_camera_is_faithful(c));
+  EXPECT_FALSE(Faithful(c));
   c.position = {300, 0, 0};
-  EXPECT_TRUE(course_camera_is_faithful(c));
+  EXPECT_TRUE(Faithful(c));
 }
 
 Material Diffuse() {
