@@ -12,7 +12,9 @@ RT_DEVICE real3 BlinnPhong(RT_PRIVATE const Material* m, real3 n, real3 wo, real
   real cos_i = Dot(n, wi);
   if (cos_i <= 0.0f) return Vec3(0.0f);
   real3 h = Normalize(wi + wo);
-  real cos_h = fmax(RT_R(0.0), Dot(n, h));
+  // Only a positive cosine is raised (fmax with 0 would be a library call on the CPU and
+  // gives the same spec: 0 for anything not above 0, NaN included).
+  real cos_h = Dot(n, h);
   real spec = cos_h > 0.0f ? PowF(cos_h, m->phong_exponent) : 0.0f;
   return (ToReal3(m->diffuse) * cos_i + ToReal3(m->specular) * spec) * e;
 }

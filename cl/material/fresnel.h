@@ -43,9 +43,14 @@ RT_DEVICE real3 Refract(real3 d, real3 n, real eta, real cos_i, real cos_t) {
   return Normalize(d * eta + n * (eta * cos_i - cos_t));
 }
 
+// e^x, skipping the call where x is zero (a channel the medium does not absorb, such as
+// metal_glass_plates' green), whose result is exactly 1 in every exponential.
+RT_DEVICE real ExpUnlessZero(real x) { return x == 0.0f ? 1.0f : ExpR(x); }
+
 // Beer-Lambert attenuation over a path of length `distance` inside a medium.
 RT_DEVICE real3 BeerLambert(real3 absorption, real distance) {
-  return Exp3(absorption * (-distance));
+  real3 a = absorption * (-distance);
+  return make_real3(ExpUnlessZero(a.x), ExpUnlessZero(a.y), ExpUnlessZero(a.z));
 }
 
 // The same with util/transcendental.h's exponential, which both devices round alike: the path

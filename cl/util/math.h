@@ -35,8 +35,6 @@ RT_DEVICE real Component(real3 a, int axis) { return axis == 0 ? a.x : (axis == 
 
 RT_DEVICE real3 Abs3(real3 a) { return make_real3(fabs(a.x), fabs(a.y), fabs(a.z)); }
 
-RT_DEVICE real3 Exp3(real3 a) { return make_real3(ExpR(a.x), ExpR(a.y), ExpR(a.z)); }
-
 RT_DEVICE int MaxDimension(real3 a) {
   return (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
 }
