@@ -30,20 +30,13 @@ RT_DEVICE real2 SampleConcentricDisk(real2 u) {
 // the 8-bit value: hw1 windmill_smooth has 1,290 pixels off the course's image with exact
 // rays and 212 with these (README, "Figures"). Each operation and its order is the one that
 // matched (su from the pixel width, s summed left to right, d divided by its length).
-// `pixel` is CoursePixelSize(cam), the same for every ray of the image.
-RT_DEVICE real3 CourseCameraDirection(RT_GLOBAL const Camera* cam, real2 pixel, real px, real py) {
-  real su = pixel.x * px;
-  real sv = pixel.y * py;
+RT_DEVICE real3 CourseCameraDirection(RT_GLOBAL const Camera* cam, real px, real py) {
+  real su = (cam->right - cam->left) / (real)cam->width * px;
+  real sv = (cam->top - cam->bottom) / (real)cam->height * py;
   real3 s = ToReal3(cam->course_q) + ToReal3(cam->course_u) * su - ToReal3(cam->course_v) * sv;
   real3 d = s - ToReal3(cam->course_eye);
   real len = Length(d);
   return make_real3(d.x / len, d.y / len, d.z / len);
-}
-
-// The film's width and height of a pixel, divided as the course's renderer divides them.
-RT_DEVICE real2 CoursePixelSize(RT_GLOBAL const Camera* cam) {
-  return make_real2((cam->right - cam->left) / (real)cam->width,
-                    (cam->top - cam->bottom) / (real)cam->height);
 }
 
 // The direction of the camera ray through film position (px, py), formed relative to the
@@ -58,13 +51,12 @@ RT_DEVICE real3 ExactCameraDirection(RT_GLOBAL const Camera* cam, real px, real 
 }
 
 // The ray through film position (px, py) in pixels (x right, y down) at shutter time
-// `time`, through lens sample `lens` in [0,1)^2; `course_pixel` is CoursePixelSize(cam).
-RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real2 course_pixel, real px,
-                                real py, real2 lens, real time) {
+// `time`, through lens sample `lens` in [0,1)^2.
+RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real px, real py, real2 lens,
+                                real time) {
   RT_GLOBAL const Camera* cam = &sd->header->camera;
-  real3 dir = (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0
-                  ? CourseCameraDirection(cam, course_pixel, px, py)
-                  : ExactCameraDirection(cam, px, py);
+  real3 dir = (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0 ? CourseCameraDirection(cam, px, py)
+                                                               : ExactCameraDirection(cam, px, py);
   Ray ray = MakeRay(ToReal3(cam->position), dir, RT_INFINITY, time);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {
     // The focal plane lies focus_distance along the gaze; every lens point aims at where
@@ -83,8 +75,7 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real2 course_pix
 }
 
 // What every camera sample of pixel (x, y) shares, computed once per pixel: the pixel's
-// part of the sample keys, the stratum permutations of the camera's dimensions and the
-// course's pixel size.
+// part of the sample keys and the stratum permutations of the camera's dimensions.
 typedef struct CameraPixel {
   int x, y;
   // The pixel's place on the film, (x, y) / resolution: the background image is stretched
@@ -94,7 +85,6 @@ typedef struct CameraPixel {
   real2 uv;
   PixelKey key;
   uint film_strata, lens_strata, time_strata;  // StratumKey* of RT_DIM_PIXEL, _LENS, _TIME.
-  real2 course_pixel;                          // CoursePixelSize.
 } CameraPixel;
 
 RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int y) {
@@ -117,7 +107,6 @@ RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int
   }
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && cam->samples > 1)
     cp.time_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_TIME, RT_STRATA_SALT_1D);
-  cp.course_pixel = CoursePixelSize(cam);
   return cp;
 }
 
@@ -144,8 +133,7 @@ RT_DEVICE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
   real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR))
     time = Stratified1DKeyed(cs.key, RT_DIM_TIME, cp->time_strata);
-  cs.ray = GenerateCameraRay(sd, cp->course_pixel, (real)cp->x + cs.film.x, (real)cp->y + cs.film.y,
-                             lens, time);
+  cs.ray = GenerateCameraRay(sd, (real)cp->x + cs.film.x, (real)cp->y + cs.film.y, lens, time);
   return cs;
 }
 
