@@ -8,5 +8,7 @@ if [ ! -x "$1" ]; then
   exit 77
 fi
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
+# PoCL and LLVM leak by design when they compile a kernel (see tools/lsan.supp).
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$(cd "$(dirname "$0")" && pwd)/lsan.supp}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 exec "$@"
