@@ -25,6 +25,9 @@ The members (an ulp is the spacing of float32 at the quantity's magnitude):
   light±1    every point light's Position moved by one ulp of max(its largest coordinate,
              the camera's), the magnitude of the shadow ray's L - p for points in view
              (lightb, c, d: the other directions)
+  eps±k      ShadowRayEpsilon moved by k = 1, 2 ulps of that same scale: the course adds
+             it to points of about that magnitude, whose float spacing rounds the offset
+             (grass_desert: 1e-3 ± 3.05e-5; the spheres: 1e-3 ± 9.5e-7)
   r2±k       every sphere's radius changed so that r^2 moves by k = 1/4 to 4 ulps of
              |centre - eye|^2: the textbook quadratic's discriminant (d.oc)^2 - (oc.oc -
              r^2) subtracts two terms of that size after about ten roundings of terms of
@@ -36,6 +39,8 @@ The members (an ulp is the spacing of float32 at the quantity's magnitude):
   double     --precision double: the whole renderer's arithmetic in double
   world      --frame world: the scene rounded to float in the file's coordinates, as the
              course holds it, not in the camera's frame (meshes keep their own frames)
+  A&B        members A and B at once (double or exact with pos±1 or light±1): the
+             course's image carries all its roundings together
   robust     --ray-offset robust: secondary rays start 8 ulps of the surface point's
              coordinates further out (larger than rounding where a point's coordinates
              are large: grass_desert's ground, scaled by 1e4, gets 8e-3; reported apart)
@@ -113,6 +118,22 @@ def edit_near(k):
     return edit
 
 
+def edit_epsilon(k):
+    """ShadowRayEpsilon moved by k ulps of the film point's scale (as edit_position): the
+    course adds it to points of about that magnitude, whose float spacing rounds it."""
+    def edit(root):
+        cam = camera(root)
+        scale = max(max(abs(c) for c in numbers(cam.findtext("Position"))),
+                    float(cam.findtext("NearDistance")))
+        e = root.find("ShadowRayEpsilon")
+        if e is None:
+            e = ET.SubElement(root, "ShadowRayEpsilon")
+            e.text = "1e-3"
+        e.text = repr(float(e.text) + k * ulp32(scale))
+        return ulp32(scale)
+    return edit
+
+
 def edit_lights(k, pattern):
     """Moves every point light by k ulps of max(its largest coordinate, the camera's): the
     shadow ray's direction L - p is rounded at that magnitude for the points in view."""
@@ -164,6 +185,9 @@ for k in (1, -1):
     for letter, pattern in PATTERNS.items():
         MEMBERS[f"light{letter}{k:+d}"] = (f"point lights' Position ulps {signs(k, pattern)}",
                                            edit_lights(k, pattern), [])
+for k in (1, -1, 2, -2):
+    MEMBERS[f"eps{k:+d}"] = (f"ShadowRayEpsilon {k:+d} ulp of the film point's scale",
+                             edit_epsilon(k), [])
 for k in (0.25, -0.25, 0.5, -0.5, 0.75, -0.75, 1, -1, 1.5, -1.5, 2, -2, 3, -3, 4, -4):
     MEMBERS[f"r2{k:+g}"] = (f"sphere r^2 {k:+g} ulp of |centre - eye|^2", edit_radii(k), [])
 MEMBERS["exact"] = ("--camera-rays exact (no world-space float rounding of the camera ray)", None,
@@ -175,7 +199,26 @@ MEMBERS["robust"] = ("--ray-offset robust (+8 ulps of the point's coordinates on
                      ["--ray-offset", "robust"])
 
 
+def combine(*names):
+    """A member that applies several members at once: the course's image carries all its
+    roundings together, and one member moves only one of ours."""
+    edits = [MEMBERS[n][1] for n in names if MEMBERS[n][1] is not None]
+
+    def edit(root):
+        sizes = [e(root) for e in edits]
+        return max((x for x in sizes if x is not None), default=None)
+    return (" and ".join(MEMBERS[n][0] for n in names), edit if edits else None,
+            [f for n in names for f in MEMBERS[n][2]])
+
+
+for first in ("double", "exact"):
+    for second in ("pos+1", "pos-1", "light+1", "light-1"):
+        MEMBERS[f"{first}&{second}"] = combine(first, second)
+
+
 def applicable(name, root):
+    if "&" in name:
+        return all(applicable(n, root) for n in name.split("&"))
     if name.startswith("r2"):
         return root.find("Objects/Sphere") is not None
     if name.startswith("light"):

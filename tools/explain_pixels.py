@@ -11,9 +11,10 @@ differs from COURSE.png gets the first mechanism that explains it:
                    channels: the pixel is decided by rounding of that member's size.
                    Families, smallest first: arith (--precision double, --camera-rays
                    exact, --frame world), camera (Position, Gaze, NearDistance by 1-2
-                   ulps), light (point lights by 1 ulp), sphere (r^2 by 1/4 to 4 ulps of
-                   |centre - eye|^2), offset (--ray-offset robust, larger than rounding on
-                   large coordinates). The member named is the first attaining one in that
+                   ulps), light (point lights by 1 ulp), epsilon (ShadowRayEpsilon by 1-2
+                   ulps of the camera's coordinates), sphere (r^2 by 1/4 to 4 ulps of
+                   |centre - eye|^2), combined (two of these at once), offset
+                   (--ray-offset robust, larger than rounding on large coordinates). The member named is the first attaining one in that
                    order, smaller steps first; the CSV lists every attaining member.
   bracketed:FAMILY no member attains it, but between our value and some member's lies the
                    course's, in every channel: the pixel passes from ours to the member's
@@ -47,13 +48,17 @@ from classify_pixels import classify, read_exr_channels, read_png  # noqa: E402
 FAMILIES = (("arith", ("double", "exact", "world")),
             ("camera", ("pos", "posb", "posc", "posd", "gaze", "gazeb", "gazec", "gazed", "near")),
             ("light", ("light", "lightb", "lightc", "lightd")),
+            ("epsilon", ("eps",)),
             ("sphere", ("r2",)),
+            ("combined", ()),
             ("offset", ("robust",)))
 MECHANISMS = ([f"rounding:{name}" for name, _ in FAMILIES] +
               [f"bracketed:{name}" for name, _ in FAMILIES] + ["boundary", "edge", "unexplained"])
 
 
 def family(member):
+    if "&" in member:
+        return "combined"
     stem = re.sub(r"[+-][\d.]+$", "", member)
     for name, stems in FAMILIES:
         if stem in stems:
@@ -65,7 +70,7 @@ def rank(member):
     """Sort key: family order, then the perturbation's size in ulps."""
     names = [name for name, _ in FAMILIES]
     fam = family(member)
-    size = re.search(r"[+-]([\d.]+)$", member)
+    size = re.search(r"[+-]([\d.]+)$", member.split("&")[-1])
     size = float(size.group(1)) if size else 0.0
     return (names.index(fam) if fam in names else len(names), size, member)
 
