@@ -70,6 +70,13 @@ OptionTable<RenderOptions> make_device_table() {
               "course: each camera ray's direction formed in world space and float, rounded "
               "as the course's renderer rounds it (its images' steep gradients need it); "
               "exact: formed relative to the camera, without that rounding")
+      .choice("--frame",
+              std::vector<std::pair<std::string, bool>>{{"camera", true}, {"world", false}},
+              RT_FIELD(camera_frame),
+              "the coordinates the devices work in: camera: the world moved so that the "
+              "camera sits at the origin, then rounded to float (precise far from the "
+              "origin); world: the file's coordinates rounded to float, as the course's "
+              "renderer holds them (tools/explain_ensemble.py compares the two)")
       .choice("--shadow-offset",
               std::vector<std::pair<std::string, bool>>{{"course", false}, {"geometric", true}},
               RT_FIELD(geometric_offset),

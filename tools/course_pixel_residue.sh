@@ -1,0 +1,32 @@
+#!/bin/bash
+# Regenerates the figures and per-pixel CSVs of docs/course_pixel_residue.md: for each
+# course image named (default: the three below 99.9 %), a rounding-sized ensemble of our
+# renderer (tools/explain_ensemble.py, full size, --device cpu) and the explanation of
+# every pixel where our image differs from the course's (tools/explain_pixels.py).
+#
+# usage: tools/course_pixel_residue.sh [NAME ...]     NAME: a line of tests/course_scenes.txt
+#   RT_BUILD (default build), RT_WORK (default /tmp/course_pixel_residue) and RT_CSV_DIR
+#   (default docs/course_pixel_residue) may be set. About 1 CPU-minute per hw1 image and 10
+#   per hw2 grass_desert.
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="${RT_BUILD:-$here/build}"
+work="${RT_WORK:-/tmp/course_pixel_residue}"
+csv_dir="${RT_CSV_DIR:-$here/docs/course_pixel_residue}"
+scenes="$here/../shared/scenes"
+[ $# -gt 0 ] || set -- hw1.spheres hw1.spheres_mirror hw2.grass_desert
+mkdir -p "$csv_dir"
+for name in "$@"; do
+  line="$(awk -v n="$name" '$1 == n' "$here/tests/course_scenes.txt")"
+  [ -n "$line" ] || { echo "$name: not a line of tests/course_scenes.txt" >&2; exit 2; }
+  read -r _ scene reference _ flags <<< "$line"
+  echo "## $name"
+  echo
+  rm -rf "$work/$name"
+  # shellcheck disable=SC2086  # The flags are words.
+  python3 "$here/tools/explain_ensemble.py" "$scenes/$scene" "$work/$name" \
+    --raytracer "$build/raytracer" -- $flags 2> /dev/null
+  python3 "$here/tools/explain_pixels.py" "$work/$name" "$scenes/$reference" --markdown \
+    --list-unexplained --csv "$csv_dir/$name.csv"
+  echo
+done
