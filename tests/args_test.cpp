@@ -67,6 +67,29 @@ TEST(RaytracerOptions, DefaultsAreTheStructsAndTruncate) {
   EXPECT_TRUE(o.kernel_cache);
 }
 
+// The course's conventions are the defaults; each option names the other choice, and
+// --frame world hands the devices the file's own coordinates instead of the camera's frame.
+TEST(RaytracerOptions, ConventionChoicesDefaultToTheCourse) {
+  CliOptions o;
+  EXPECT_EQ(parse({"scene.xml"}, &o), "");
+  EXPECT_TRUE(o.render.camera_frame);
+  EXPECT_FALSE(o.render.robust_offset);
+  EXPECT_FALSE(o.render.exact_camera_rays);
+  EXPECT_FALSE(o.render.geometric_offset);
+  EXPECT_FALSE(o.render.facing_reflection);
+  CliOptions w;
+  EXPECT_EQ(parse({"scene.xml", "--frame", "world", "--ray-offset", "robust", "--camera-rays",
+                   "exact", "--shadow-offset", "geometric", "--reflection-offset", "facing"},
+                  &w),
+            "");
+  EXPECT_FALSE(w.render.camera_frame);
+  EXPECT_TRUE(w.render.robust_offset);
+  EXPECT_TRUE(w.render.exact_camera_rays);
+  EXPECT_TRUE(w.render.geometric_offset);
+  EXPECT_TRUE(w.render.facing_reflection);
+  EXPECT_EQ(parse({"--frame", "object"}, &w), "--frame: 'object' is not one of camera, world");
+}
+
 TEST(RaytracerOptions, UsageErrorsNameTheOptionAndTheValue) {
   CliOptions o;
   EXPECT_EQ(parse({"--spp", "abc"}, &o), "--spp: 'abc' is not a whole number in [1, 1048576]");

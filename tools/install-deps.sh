@@ -5,7 +5,7 @@ set -eu
 PACKAGES="cmake g++ make pkg-config libtinyxml2-dev libpng-dev libjpeg62-turbo-dev zlib1g-dev ocl-icd-opencl-dev
   opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo libgtest-dev libopenexr-dev
   libopenmpi-dev openmpi-bin libassimp-dev nlohmann-json3-dev assimp-testmodels clang
-  libclang-rt-14-dev libembree-dev"
+  libclang-rt-14-dev libembree-dev python3"
 missing=""
 for p in $PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
