@@ -163,16 +163,16 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
         next = inst->blas_root;
       }
     } else {
-      int first = RtLeafFirst(ref), end = first + RtLeafCount(ref);
-      for (int i = first; i < end; ++i) {
-        RT_GLOBAL const Triangle* tri = &sd->triangles[i];
+      // A bottom-level leaf: its triangles in blocks, tested a block at a time in order.
+      RT_GLOBAL const TriangleBlock* block = &sd->triangle_blocks[RtLeafFirst(ref)];
+      for (int n = RtLeafCount(ref); n > 0; n -= RT_BVH_WIDTH, ++block) {
         real t, b1, b2;
-        if (IntersectTriangle(tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull,
-                              &t, &b1, &b2)) {
+        int lane = IntersectTriangleBlock(block, tr, tmax, cull, any_hit, &t, &b1, &b2);
+        if (lane >= 0) {
           tmax = t;
           hit->t = t;
           hit->instance = instance;
-          hit->primitive = i;
+          hit->primitive = block->first + lane;
           hit->b1 = b1;
           hit->b2 = b2;
           if (any_hit) return 1;
