@@ -81,6 +81,7 @@ typedef struct CameraPixel {
   // The pixel's place on the film, (x, y) / resolution: the background image is stretched
   // over the film, and with the bilinear lookup's convention (texture/image_texture.h) an
   // image of the film's size is reproduced texel for texel, as in the course's galactica images.
+  // (0, 0) where the scene has no background image.
   real2 uv;
   PixelKey key;
   uint film_strata, lens_strata, time_strata;  // StratumKey* of RT_DIM_PIXEL, _LENS, _TIME.
@@ -92,11 +93,14 @@ RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int
   CameraPixel cp;
   cp.x = x;
   cp.y = y;
-  cp.uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
+  cp.uv = make_real2(0.0f, 0.0f);  // Only a background image reads it (texturing.h, Background).
+  if (RT_HAS(sd, RT_FEATURE_TEXTURES) && h->background_texture >= 0)
+    cp.uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
   cp.key = MakePixelKey((uint)(y * cam->width + x), (uint)cam->samples, (uint)cam->strata, h->seed);
   cp.film_strata = cp.lens_strata = cp.time_strata = 0u;
-  if (cam->strata != 0) {
-    if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1)
+  // One stratum (one sample per pixel) needs no permutation key (Stratified2DKeyed).
+  if (cam->strata > 1) {
+    if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE))
       cp.film_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_PIXEL, RT_STRATA_SALT_2D);
     if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD))
       cp.lens_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_LENS, RT_STRATA_SALT_2D);

@@ -25,6 +25,27 @@ double ChiSquareCritical(int df) {
   return df * std::pow(1 - h + z * std::sqrt(h), 3);
 }
 
+// One sample per pixel is one stratum: Stratified2D returns the jitter without permuting,
+// which must be what the n x n formula gives for n = 1 (stratum 0, (0 + xi) * 1), bit for
+// bit, so skipping the permutation changed no image.
+TEST(Sampler, OneStratumIsTheJitterItself) {
+  for (uint p = 0; p < 2000; ++p)
+    for (uint d : {0u, 2u, 5u, 0x9e3779b9u}) {
+      SampleKey k = Key(p, 0, 1, p % 3);
+      ASSERT_EQ(k.strata, 1u);
+      uint key = StratumKey(k.pixel_hash, k.seed, d, RT_STRATA_SALT_2D);
+      uint stratum = PermutationElement(0, 1, key);
+      ASSERT_EQ(stratum, 0u);
+      real2 xi = Random2D(k, d);
+      real inv = 1.0f / (real)k.strata;
+      real2 formula =
+          make_real2(((real)(stratum % 1u) + xi.x) * inv, ((real)(stratum / 1u) + xi.y) * inv);
+      real2 got = Stratified2D(k, d);
+      ASSERT_EQ(got.x, formula.x);
+      ASSERT_EQ(got.y, formula.y);
+    }
+}
+
 // The keys hashed once per pixel (PixelKey, StratumKey) are the same Hash4 values as the
 // keys of every random number before that split, so images did not change with it.
 TEST(Sampler, PixelKeysAreTheHashesOfTheirCoordinates) {
