@@ -43,6 +43,7 @@ struct Args {
   int reps = 3;
   int camera = 0;
   bool build = false;
+  bool ours_only = false;
 };
 
 double ThreadCpuSeconds() {
@@ -237,6 +238,14 @@ int TraceComparison(const Args& a, const rt::SceneDesc& desc, rt::RenderOptions 
   rt::FlatScene flat = rt::flatten_scene(desc, opt);
   rt::set_camera(flat, desc, a.camera, opt);
   RaySet set = CameraRays(flat);
+  if (a.ours_only) {  // For comparing two builds of ours: Embree's part is then only noise.
+    std::vector<float> t(set.rays.size());
+    double r = MraysPerCpuSecond(
+        [&](const RaySet& s, std::vector<float>& out) { TraceOurs(flat, s, out); }, set, a.reps, t);
+    std::printf("rays %zu triangles %zu ours %.3f hits %zu\n", set.rays.size(),
+                flat.stats.triangles, r, Hits(t));
+    return 0;
+  }
   RTCDevice device = NewDevice(0);
   const rt::Vec3d eye = opt.camera_frame ? desc.cameras[a.camera].position : rt::Vec3d{};
   RTCScene es = EmbreeScene(device, desc, eye);
@@ -319,7 +328,8 @@ Args Parse(int argc, char** argv) {
       .integer("--spp", "N", Range::closed(1, 4096), RT_FIELD(spp), "camera rays per pixel")
       .integer("--reps", "N", Range::closed(1, 100), RT_FIELD(reps), "repetitions (median)")
       .integer("--camera", "N", Range::closed(0, 1 << 20), RT_FIELD(camera), "the camera")
-      .flag("--build", RT_FIELD(build), "compare BVH build times at 1 and 2 threads");
+      .flag("--build", RT_FIELD(build), "compare BVH build times at 1 and 2 threads")
+      .flag("--ours-only", RT_FIELD(ours_only), "trace with our BVH alone (no Embree figures)");
   Args a;
   std::vector<std::string> scenes = t.parse_or_exit(argc, argv, &a);
   if (scenes.size() != 1) t.usage_error("needs one SCENE.xml");

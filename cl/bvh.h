@@ -77,16 +77,27 @@ RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE 
 
 // Tests a node's children and returns the nearest child hit (RT_BVH_POP if none), pushing
 // the others farthest first so they pop nearest first. Equal distances keep lane order,
-// the same on both devices.
+// the same on both devices. A shadow ray (any_hit) asks only whether something lies before
+// tmax, which no order changes, so its children are not sorted: the first lane hit is
+// visited next and the others pushed.
 RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, real tmax,
-                            RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
+                            int any_hit, RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
   LaneReal tnear;
   LaneInt hits = IntersectChildBoxes(node, r, tmax, &tnear);
-  real lane_t[RT_BVH_WIDTH];
   int lane_hit[RT_BVH_WIDTH], lane_child[RT_BVH_WIDTH];
-  LaneStoreR(tnear, lane_t);
   LaneStoreI(hits, lane_hit);
   LaneStoreI(node->child, lane_child);
+  if (any_hit) {
+    int next = RT_BVH_POP;
+    for (int i = RT_BVH_WIDTH - 1; i >= 0; --i) {
+      if (lane_hit[i] == 0) continue;
+      if (next != RT_BVH_POP) stack[(*sp)++] = next;
+      next = lane_child[i];
+    }
+    return next;
+  }
+  real lane_t[RT_BVH_WIDTH];
+  LaneStoreR(tnear, lane_t);
   real sorted_t[RT_BVH_WIDTH];
   int sorted_child[RT_BVH_WIDTH];
   int n = 0;
@@ -120,12 +131,13 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   int sp = 0;
   int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
   int instance = -1;                // The instance whose BVH we are in, or -1 at the top level.
-  // The world's ray is set up once; an instance's ray replaces it while the traversal is
-  // inside the instance, and the pointers switch back on return.
+  // The world's node ray is set up once; an instance's ray replaces it while the traversal
+  // is inside the instance (unless the instance neither moves nor is transformed: its ray
+  // is the world's), and the pointer switches back on return. Triangles lie only inside
+  // instances, so only an instance's triangle ray is ever made.
   NodeRay world_nr = MakeNodeRay(ray.origin, ray.direction), object_nr;
-  TriangleRay world_tr = MakeTriangleRay(ray.origin, ray.direction), object_tr;
+  TriangleRay object_tr;
   RT_PRIVATE const NodeRay* nr = &world_nr;
-  RT_PRIVATE const TriangleRay* tr = &world_tr;
   real tmax = ray.tmax;
   hit->instance = -1;
   hit->t = tmax;
@@ -133,16 +145,18 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   for (;;) {
     int next = RT_BVH_POP;
     if (ref >= 0) {
-      next = VisitChildren(&sd->nodes[ref], nr, tmax, stack, &sp);
+      next = VisitChildren(&sd->nodes[ref], nr, tmax, any_hit, stack, &sp);
     } else if (instance < 0) {
       // A top-level leaf: exactly one instance.
       int ii = RtLeafFirst(ref);
       RT_GLOBAL const Instance* inst = &sd->instances[ii];
       real3 io = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
       real3 id = ray.direction;
+      int moved = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0;
       if (RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0) {
         io = TransformPoint(inst->world_to_object, io);
         id = TransformVector(inst->world_to_object, id);
+        moved = 1;
       }
       if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {
         real t;
@@ -155,24 +169,25 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
         }
       } else if (RT_HAS(sd, RT_FEATURE_TRIANGLES)) {
         instance = ii;
-        object_nr = MakeNodeRay(io, id);
+        if (moved) {
+          object_nr = MakeNodeRay(io, id);
+          nr = &object_nr;
+        }
         object_tr = MakeTriangleRay(io, id);
-        nr = &object_nr;
-        tr = &object_tr;
         stack[sp++] = RT_STACK_RETURN_TO_WORLD;
         next = inst->blas_root;
       }
     } else {
-      int first = RtLeafFirst(ref), end = first + RtLeafCount(ref);
-      for (int i = first; i < end; ++i) {
-        RT_GLOBAL const Triangle* tri = &sd->triangles[i];
+      // A bottom-level leaf: its triangles in blocks, tested a block at a time in order.
+      RT_GLOBAL const TriangleBlock* block = &sd->triangle_blocks[RtLeafFirst(ref)];
+      for (int n = RtLeafCount(ref); n > 0; n -= RT_BVH_WIDTH, ++block) {
         real t, b1, b2;
-        if (IntersectTriangle(tr, ToReal3(tri->v0), ToReal3(tri->v1), ToReal3(tri->v2), tmax, cull,
-                              &t, &b1, &b2)) {
+        int lane = IntersectTriangleBlock(block, &object_tr, tmax, cull, any_hit, &t, &b1, &b2);
+        if (lane >= 0) {
           tmax = t;
           hit->t = t;
           hit->instance = instance;
-          hit->primitive = i;
+          hit->primitive = block->first + lane;
           hit->b1 = b1;
           hit->b2 = b2;
           if (any_hit) return 1;
@@ -185,7 +200,6 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       if (next == RT_STACK_RETURN_TO_WORLD) {
         instance = -1;
         nr = &world_nr;
-        tr = &world_tr;
         next = RT_BVH_POP;
       }
     }

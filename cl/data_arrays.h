@@ -19,6 +19,7 @@
   RT_DATA_ARRAY(Instance, instances)                 \
   RT_DATA_ARRAY(BvhNode, nodes)                      \
   RT_DATA_ARRAY(Triangle, triangles)                 \
+  RT_DATA_ARRAY(TriangleBlock, triangle_blocks)      \
   RT_DATA_ARRAY(TriangleNormals, normals)            \
   RT_DATA_ARRAY(Light, lights)                       \
   RT_DATA_ARRAY(TextureDesc, textures)               \

@@ -115,8 +115,8 @@ typedef struct Instance {
 // A node of the wide BVH: the boxes of up to RT_BVH_WIDTH children, one lane per child,
 // stored as one vector per bound (structure of arrays) so one node test checks every child
 // at once with aligned vector loads. child[i] is a node index (>= 0), RT_BVH_EMPTY for an
-// unused lane, or a leaf reference made by RtLeafRef (primitives first..first+count-1 of
-// the triangles at the bottom level, or one instance at the top level).
+// unused lane, or a leaf reference made by RtLeafRef (count triangles from the block
+// `first` of triangle_blocks at the bottom level, or one instance at the top level).
 #define RT_BVH_EMPTY (-1)
 #define RT_BVH_LEAF_COUNT_BITS 4
 #define RT_BVH_MAX_LEAF (1 << RT_BVH_LEAF_COUNT_BITS)
@@ -131,6 +131,18 @@ typedef struct RT_ALIGN_NODE BvhNode {
   LaneInt child;
   LaneInt pad;  // Rounds the node to 128 (width 4) or 256 bytes (width 8): whole cache lines.
 } BvhNode;
+
+// RT_BVH_WIDTH triangles of one bottom-level leaf, structure of arrays, for the block test
+// (cl/shapes.h, IntersectTriangleBlock): v[3 * k + a] holds axis a of vertex k, lane i the
+// triangle `first + i` of `triangles`. A leaf of n triangles is ceil(n / RT_BVH_WIDTH)
+// consecutive blocks; lanes past its end hold an all-zero triangle, which the watertight
+// test always rejects (its determinant is exactly 0). The bottom-level leaf references
+// (RtLeafRef) count triangles from their first block (src/triangle_blocks.cpp).
+typedef struct TriangleBlock {
+  LaneFloat v[9];
+  int first;
+  int pad[3];
+} TriangleBlock;
 
 typedef struct Triangle {
   float3 v0, v1, v2;

@@ -5,6 +5,7 @@
 
 #include "ray.h"
 #include "scene_types.h"
+#include "util/lanes.h"
 
 // Per-ray constants of the watertight test (Woop, Benthin and Wald 2013): the ray is
 // sheared so it runs along +z, which makes the edge functions exact in sign.
@@ -16,6 +17,8 @@ typedef struct TriangleRay {
   Quad origin_quad;  // The origin and (kx, ky, kz) as vector lanes for TrianglePoint.
   QuadIndex axes;
 #endif
+  // The permuted origin and the shear broadcast to every lane, for IntersectTriangleBlock.
+  LaneReal lane_ox, lane_oy, lane_oz, lane_sx, lane_sy, lane_sz;
 } TriangleRay;
 
 RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
@@ -38,6 +41,12 @@ RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
   tr.origin_quad = QuadFrom3(origin);
   tr.axes = QuadIndexOf(tr.kx, tr.ky, tr.kz, 3);
 #endif
+  tr.lane_ox = LaneSplat(Component(origin, tr.kx));
+  tr.lane_oy = LaneSplat(Component(origin, tr.ky));
+  tr.lane_oz = LaneSplat(Component(origin, tr.kz));
+  tr.lane_sx = LaneSplat(tr.sx);
+  tr.lane_sy = LaneSplat(tr.sy);
+  tr.lane_sz = LaneSplat(tr.sz);
   return tr;
 }
 
@@ -81,6 +90,74 @@ RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, real3 p0, real
   *b1 = v * inv_det;
   *b2 = w * inv_det;
   return *t > 0.0f && *t < tmax;
+}
+
+// IntersectTriangle on the RT_BVH_WIDTH triangles of a block at once, lane by lane the same
+// operations in the same order, so every lane rounds as the scalar test does. Returns the
+// lane the scalar test run over the lanes in order would keep (the nearest hit, the first
+// of equal ones; with any_hit, the first hit) and sets *t, *b1, *b2, or -1 for none. The
+// lanes are tested against the tmax the block starts with; the scalar test narrows tmax
+// after each hit, and its early rejection (tscaled against tmax * det) then depends on the
+// narrowed value, so the lanes that pass are checked again in order against it: a lane the
+// scalar loop keeps always passes at the starting tmax too (rounding is monotonic), so the
+// result is the scalar loop's exactly.
+RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
+                                     RT_PRIVATE const TriangleRay* tr, real tmax, int cull,
+                                     int any_hit, RT_PRIVATE real* t, RT_PRIVATE real* b1,
+                                     RT_PRIVATE real* b2) {
+  RT_GLOBAL const LaneFloat* v = block->v;
+  LaneReal az = LaneToReal(v[tr->kz]) - tr->lane_oz;
+  LaneReal bz = LaneToReal(v[3 + tr->kz]) - tr->lane_oz;
+  LaneReal cz = LaneToReal(v[6 + tr->kz]) - tr->lane_oz;
+  LaneReal ax = (LaneToReal(v[tr->kx]) - tr->lane_ox) - tr->lane_sx * az;
+  LaneReal ay = (LaneToReal(v[tr->ky]) - tr->lane_oy) - tr->lane_sy * az;
+  LaneReal bx = (LaneToReal(v[3 + tr->kx]) - tr->lane_ox) - tr->lane_sx * bz;
+  LaneReal by = (LaneToReal(v[3 + tr->ky]) - tr->lane_oy) - tr->lane_sy * bz;
+  LaneReal cx = (LaneToReal(v[6 + tr->kx]) - tr->lane_ox) - tr->lane_sx * cz;
+  LaneReal cy = (LaneToReal(v[6 + tr->ky]) - tr->lane_oy) - tr->lane_sy * cz;
+  LaneReal u = cx * by - cy * bx;
+  LaneReal vv = ax * cy - ay * cx;
+  LaneReal w = bx * ay - by * ax;
+  LaneReal zero = LaneSplat(0.0f);
+  LaneRealMask miss =
+      ((u < zero) | (vv < zero) | (w < zero)) & ((u > zero) | (vv > zero) | (w > zero));
+  LaneReal det = u + vv + w;
+  miss |= det == zero;
+  if (cull) miss |= det < zero;
+  LaneReal tscaled = u * (tr->lane_sz * az) + vv * (tr->lane_sz * bz) + w * (tr->lane_sz * cz);
+  LaneReal tmax_det = LaneSplat(tmax) * det;
+  miss |= (det < zero) & ((tscaled >= zero) | (tscaled < tmax_det));
+  miss |= (det > zero) & ((tscaled <= zero) | (tscaled > tmax_det));
+  LaneReal inv_det = LaneSplat(1.0f) / det;
+  LaneReal lane_t = tscaled * inv_det;
+  LaneRealMask found = ~miss & (lane_t > zero) & (lane_t < LaneSplat(tmax));
+  if (!LaneAny(found)) return -1;
+  real ts[RT_BVH_WIDTH], dets[RT_BVH_WIDTH], tss[RT_BVH_WIDTH];
+  int hits[RT_BVH_WIDTH];
+  LaneStoreR(lane_t, ts);
+  LaneStoreR(det, dets);
+  LaneStoreR(tscaled, tss);
+  LaneStoreI(LaneMaskToInt(found), hits);
+  int best = -1;
+  for (int i = 0; i < RT_BVH_WIDTH; ++i) {
+    if (hits[i] == 0) continue;
+    if (best >= 0) {  // tmax has narrowed: the scalar test's checks that depend on it.
+      real limit = tmax * dets[i];
+      if (dets[i] < 0.0f ? tss[i] < limit : tss[i] > limit) continue;
+      if (!(ts[i] < tmax)) continue;
+    }
+    best = i;
+    tmax = ts[i];
+    if (any_hit) break;
+  }
+  real invs[RT_BVH_WIDTH], vs[RT_BVH_WIDTH], ws[RT_BVH_WIDTH];
+  LaneStoreR(inv_det, invs);
+  LaneStoreR(vv, vs);
+  LaneStoreR(w, ws);
+  *t = ts[best];
+  *b1 = vs[best] * invs[best];
+  *b2 = ws[best] * invs[best];
+  return best;
 }
 
 // Intersects the unit sphere at the origin. The discriminant is formed from the squared

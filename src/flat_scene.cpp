@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "bvh_wide.h"
+#include "triangle_blocks.h"
 #include "cl/features.h"
 #include "cl/material/brdf.h"
 #include "world_frame.h"
@@ -20,6 +21,7 @@ static_assert(sizeof(Light) == 128, "Light layout");
 static_assert(sizeof(Camera) == 176, "Camera layout");
 static_assert(sizeof(Instance) == 144, "Instance layout");
 static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
+static_assert(sizeof(TriangleBlock) == (RT_BVH_WIDTH == 4 ? 160 : 320), "TriangleBlock layout");
 static_assert(sizeof(SceneHeader) == 272, "SceneHeader layout");
 static_assert(sizeof(TextureDesc) == 96, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
@@ -125,6 +127,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     }
   }
   f.blas_nodes = f.nodes.size();
+  build_triangle_blocks(f);
   flatten_textures(scene, f);
   flatten_environment(scene, f);
   f.stats.triangles = f.triangles.size();

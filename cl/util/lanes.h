@@ -11,17 +11,20 @@
 
 #ifndef RT_REAL_DOUBLE
 typedef LaneFloat LaneReal;
+typedef LaneInt LaneRealMask;  // What a comparison of LaneReal yields: -1 / 0 per lane.
 #define LaneToReal(v) (v)
 #define LaneStoreR(v, p) LaneStoreF((v), (p))
 #define LaneMaskToInt(m) (m)
 #elif defined(__OPENCL_C_VERSION__)
 #if RT_BVH_WIDTH == 4
 typedef double4 LaneReal;
+typedef long4 LaneRealMask;
 #define LaneToReal(v) convert_double4(v)
 #define LaneStoreR(v, p) vstore4((v), 0, (p))
 #define LaneMaskToInt(m) convert_int4(m)
 #else
 typedef double8 LaneReal;
+typedef long8 LaneRealMask;
 #define LaneToReal(v) convert_double8(v)
 #define LaneStoreR(v, p) vstore8((v), 0, (p))
 #define LaneMaskToInt(m) convert_int8(m)
@@ -31,6 +34,7 @@ typedef double8 LaneReal;
 // note that 32-byte vectors pass differently with and without AVX concerns no call here.
 #pragma GCC diagnostic ignored "-Wpsabi"
 typedef double LaneReal __attribute__((vector_size(8 * RT_BVH_WIDTH)));
+typedef decltype(LaneReal{} < LaneReal{}) LaneRealMask;
 #define LaneToReal(v) __builtin_convertvector((v), LaneReal)
 inline void LaneStoreR(LaneReal v, double* p) { std::memcpy(p, &v, sizeof v); }
 // A comparison of double lanes yields 64-bit lanes of -1 / 0.
@@ -47,6 +51,20 @@ RT_DEVICE LaneReal LaneSplat(real x) {
   return (LaneReal)(x);
 #else
   return x - LaneReal{};  // Broadcasts x; x - (+0) is x for every x, -0 included.
+#endif
+}
+
+// 1 when any lane of a comparison's mask is set.
+RT_DEVICE int LaneAny(LaneRealMask m) {
+#ifdef __OPENCL_C_VERSION__
+  return any(m);
+#else
+  LaneInt i = LaneMaskToInt(m);
+  int lanes[RT_BVH_WIDTH];
+  LaneStoreI(i, lanes);
+  int a = 0;
+  for (int k = 0; k < RT_BVH_WIDTH; ++k) a |= lanes[k];
+  return a != 0;
 #endif
 }
 
