@@ -5,8 +5,6 @@
 // is a multiple of what any device asks; otherwise it keeps a second copy of the scene.
 #pragma once
 
-#include <sys/mman.h>
-
 #include <cstddef>
 #include <cstdlib>
 #include <new>
@@ -23,24 +21,12 @@ struct PageAlignedAllocator {
   template <class U>
   PageAlignedAllocator(const PageAlignedAllocator<U>&) {}
 
-  // Arrays of a huge page or more (the BVH nodes and triangles of large meshes) start on a
-  // huge-page boundary and ask for transparent huge pages before they are first written:
-  // traversal reads them at random, and on 4 KiB pages a tree of a million triangles
-  // spans far more pages than the TLB holds (Linux grants them where
-  // /sys/kernel/mm/transparent_hugepage/enabled says madvise or always; elsewhere the
-  // advice is ignored and the array is an ordinary one).
-  static constexpr std::size_t kHugePage = std::size_t(2) << 20;
-
   T* allocate(std::size_t n) {
-    if (n > static_cast<std::size_t>(-1) / sizeof(T) - kHugePage) throw std::bad_alloc();
-    std::size_t align = n * sizeof(T) >= kHugePage ? kHugePage : kAlignment;
+    if (n > static_cast<std::size_t>(-1) / sizeof(T) - kAlignment) throw std::bad_alloc();
     // aligned_alloc wants a size that is a multiple of the alignment.
-    std::size_t bytes = (n * sizeof(T) + align - 1) / align * align;
-    void* p = std::aligned_alloc(align, bytes);
+    std::size_t bytes = (n * sizeof(T) + kAlignment - 1) / kAlignment * kAlignment;
+    void* p = std::aligned_alloc(kAlignment, bytes);
     if (!p) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-    if (align == kHugePage) madvise(p, bytes, MADV_HUGEPAGE);
-#endif
     return static_cast<T*>(p);
   }
   void deallocate(T* p, std::size_t) { std::free(p); }
