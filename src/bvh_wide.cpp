@@ -1,5 +1,7 @@
 #include "bvh_wide.h"
 
+#include "bvh_lanes.h"
+
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -12,20 +14,6 @@ namespace {
 float area(const BinaryBvhNode& n) {
   float dx = n.hi[0] - n.lo[0], dy = n.hi[1] - n.lo[1], dz = n.hi[2] - n.lo[2];
   return 2.0f * (dx * dy + dy * dz + dz * dx);
-}
-
-void set_lane(LaneFloat& v, int lane, float value) {
-  float a[RT_BVH_WIDTH];
-  std::memcpy(a, &v, sizeof a);
-  a[lane] = value;
-  std::memcpy(&v, a, sizeof a);
-}
-
-void set_lane(LaneInt& v, int lane, int value) {
-  int a[RT_BVH_WIDTH];
-  std::memcpy(a, &v, sizeof a);
-  a[lane] = value;
-  std::memcpy(&v, a, sizeof a);
 }
 
 class Collapser {

@@ -1,5 +1,7 @@
 #include "triangle_blocks.h"
 
+#include "bvh_lanes.h"
+
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -7,19 +9,6 @@
 namespace rt {
 
 namespace {
-
-int lane_of(const LaneInt& v, int lane) {
-  int a[RT_BVH_WIDTH];
-  std::memcpy(a, &v, sizeof a);
-  return a[lane];
-}
-
-void set_lane(LaneInt& v, int lane, int value) {
-  int a[RT_BVH_WIDTH];
-  std::memcpy(a, &v, sizeof a);
-  a[lane] = value;
-  std::memcpy(&v, a, sizeof a);
-}
 
 // Blocks a leaf of `count` triangles takes.
 int blocks_of(int count) { return (count + RT_BVH_WIDTH - 1) / RT_BVH_WIDTH; }
