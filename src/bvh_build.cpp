@@ -1,18 +1,15 @@
 #include "bvh_build.h"
 
 #include <algorithm>
-#include <condition_variable>
 #include <cstring>
-#include <deque>
 #include <memory>
-#include <mutex>
 #include <new>
-#include <thread>
 #if defined(__SSE__)
 #include <xmmintrin.h>
 #endif
 
 #include "cl/bvh.h"
+#include "util/job_stack.h"
 #include "util/parallel_for.h"
 
 namespace rt {
@@ -138,54 +135,6 @@ struct Job {
   Record* record;
   int begin, end, depth;
   Box4 box, cbox;
-};
-
-// Runs jobs, and the jobs they push, on a few threads, last pushed first (depth first,
-// so a thread keeps working on the memory it just partitioned).
-class JobStack {
- public:
-  void push(const Job& j) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      jobs_.push_back(j);
-    }
-    wake_.notify_one();
-  }
-
-  template <class Fn>
-  void run(int threads, Fn fn) {
-    auto work = [&] {
-      std::unique_lock<std::mutex> lock(mutex_);
-      for (;;) {
-        wake_.wait(lock, [&] { return !jobs_.empty() || busy_ == 0; });
-        if (jobs_.empty()) return;  // Nothing queued and nobody left to queue more.
-        Job j = jobs_.back();
-        jobs_.pop_back();
-        ++busy_;
-        lock.unlock();
-        fn(j);
-        lock.lock();
-        if (--busy_ == 0 && jobs_.empty()) wake_.notify_all();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
-  }
-
-  Record* new_record() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    records_.emplace_back();
-    return &records_.back();  // A deque never moves its elements.
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  std::vector<Job> jobs_;
-  std::deque<Record> records_;
-  int busy_ = 0;
 };
 
 class Builder {
@@ -439,7 +388,7 @@ class Builder {
     void operator()(BinaryBvhNode* p) const { ::operator delete(p); }
   };
   std::unique_ptr<BinaryBvhNode, FreeRaw> pool_;
-  JobStack jobs_;
+  JobStack<Job, Record> jobs_;
 };
 
 }  // namespace
