@@ -108,6 +108,10 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     fm.first_triangle = offset;
     std::vector<BinaryBvhNode> binary;
     BvhBuildResult r = build_bvh(prims, options.bvh, options.bvh.max_leaf, offset, binary);
+    // Room for the wide nodes, at most one per interior binary node (and the root), so that
+    // the collapse does not copy the array as it grows; the pages past its end stay untouched.
+    const size_t most_nodes = f.nodes.size() + binary.size() / 2 + 1;
+    if (f.nodes.capacity() < most_nodes) f.nodes.reserve(std::max(most_nodes, 2 * f.nodes.size()));
     WideBvhResult w = collapse_bvh(binary, r.root, f.nodes);
     fm.blas_root = w.root;
     f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
