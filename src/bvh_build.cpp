@@ -79,10 +79,17 @@ struct Box4 {
   }
 };
 
+// A primitive's box in vector registers; lane 3 of lo holds the index's bits, of hi nothing.
 struct Prim {
-  Vec4 lo, hi;  // Lane 3 of lo holds the index's bits, of hi nothing.
+  Vec4 lo, hi;
 };
 static_assert(sizeof(Prim) == sizeof(BvhPrimitive), "Prim mirrors BvhPrimitive");
+
+inline Prim load(const BvhPrimitive& q) {
+  Prim p;
+  std::memcpy(&p, &q, sizeof p);
+  return p;
+}
 
 // A primitive's centroid, rounded as every other centroid of the build.
 inline Vec4 centroid(const Prim& p) { return 0.5f * (p.lo + p.hi); }
@@ -141,7 +148,7 @@ class Builder {
  public:
   Builder(std::vector<BvhPrimitive>& prims, const BvhOptions& options, int max_leaf,
           int prim_offset, std::vector<BinaryBvhNode>& nodes)
-      : prims_(reinterpret_cast<Prim*>(prims.data())),
+      : prims_(prims.data()),
         count_(static_cast<int>(prims.size())),
         bins_(std::min(kMaxBins, std::max(2, options.bins))),
         max_leaf_(max_leaf),
@@ -245,8 +252,9 @@ class Builder {
 
   void bounds(int begin, int end, Box4* box, Box4* cbox) const {
     for (int i = begin; i < end; ++i) {
-      box->grow(prims_[i].lo, prims_[i].hi);
-      Vec4 c = centroid(prims_[i]);
+      const Prim p = load(prims_[i]);
+      box->grow(p.lo, p.hi);
+      Vec4 c = centroid(p);
       cbox->grow(c, c);
     }
   }
@@ -286,7 +294,7 @@ class Builder {
     const int axis = s->axis;
     s->mid = (begin + end) / 2;
     std::nth_element(prims_ + begin, prims_ + s->mid, prims_ + end,
-                     [axis](const Prim& a, const Prim& b) {
+                     [axis](const BvhPrimitive& a, const BvhPrimitive& b) {
                        return 0.5f * (a.lo[axis] + a.hi[axis]) < 0.5f * (b.lo[axis] + b.hi[axis]);
                      });
     bounds(begin, s->mid, &s->box[0], &s->cbox[0]);
@@ -303,7 +311,7 @@ class Builder {
       for (int j = 0; j < nb; ++j) new (&bins.box[axis][j]) Box4(), bins.count[axis][j] = 0;
     // Every axis in one pass; an axis without extent bins everything into bin 0.
     for (int i = begin; i < end; ++i) {
-      const Prim& p = prims_[i];
+      const Prim p = load(prims_[i]);
       Vec4i j = binning.bin(centroid(p));
       for (int axis = 0; axis < 3; ++axis) {
         bins.box[axis][j[axis]].grow(p.lo, p.hi);
@@ -358,10 +366,11 @@ class Builder {
   // The swaps are those of libstdc++'s std::partition (bidirectional form), so the order
   // within each side, and with it the tree, is the one earlier versions built.
   int partition(int begin, int end, const Binning& binning, int axis, int last_bin, Split* s) {
-    Prim* first = prims_ + begin;
-    Prim* last = prims_ + end;
+    BvhPrimitive* first = prims_ + begin;
+    BvhPrimitive* last = prims_ + end;
     Box4 box[2], cbox[2];
-    auto side = [&](const Prim& p) {  // 0: left, 1: right; grows that side's bounds.
+    auto side = [&](const BvhPrimitive& q) {  // 0: left, 1: right; grows that side's bounds.
+      const Prim p = load(q);
       Vec4 c = centroid(p);
       int k = binning.bin(c)[axis] <= last_bin ? 0 : 1;
       box[k].grow(p.lo, p.hi);
@@ -381,7 +390,7 @@ class Builder {
     return static_cast<int>(first - prims_);
   }
 
-  Prim* prims_;
+  BvhPrimitive* prims_;
   int count_, bins_, max_leaf_, offset_, threads_;
   std::vector<BinaryBvhNode>& nodes_;
   struct FreeRaw {

@@ -4,7 +4,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 
 #include "bvh_wide.h"
 #include "cl/features.h"
@@ -112,12 +114,32 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     // the collapse does not copy the array as it grows; the pages past its end stay untouched.
     const size_t most_nodes = f.nodes.size() + binary.size() / 2 + 1;
     if (f.nodes.capacity() < most_nodes) f.nodes.reserve(std::max(most_nodes, 2 * f.nodes.size()));
-    WideBvhResult w = collapse_bvh(binary, r.root, f.nodes);
-    fm.blas_root = w.root;
-    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
     fm.box.grow(binary[r.root].lo[0], binary[r.root].lo[1], binary[r.root].lo[2]);
     fm.box.grow(binary[r.root].hi[0], binary[r.root].hi[1], binary[r.root].hi[2]);
-    std::vector<BinaryBvhNode>().swap(binary);  // Freed before the copies below: peak memory.
+    // The collapse (serial) runs beside the copies below, which need only the order; the
+    // binary tree is freed as soon as it is done with, for peak memory.
+    const int threads = resolve_threads(options.bvh.threads);
+    WideBvhResult w;
+    std::exception_ptr collapse_error;
+    auto collapse = [&] {
+      try {
+        w = collapse_bvh(binary, r.root, f.nodes);
+      } catch (...) {
+        collapse_error = std::current_exception();
+      }
+      std::vector<BinaryBvhNode>().swap(binary);
+    };
+    std::thread collapser;
+    struct JoinOnExit {  // Also when a copy below throws: a joinable thread must not die.
+      std::thread& t;
+      ~JoinOnExit() {
+        if (t.joinable()) t.join();
+      }
+    } join_on_exit{collapser};
+    if (threads > 1)
+      collapser = std::thread(collapse);
+    else
+      collapse();
     std::vector<Vec3d> vn;
     if (mesh.smooth) vn = vertex_normals(mesh);
     // The triangles in leaf order, in parallel: each position is written once, from its
@@ -151,7 +173,11 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
         }
       }
     };
-    parallel_ranges(prims.size(), 1 << 16, resolve_threads(options.bvh.threads), copy);
+    parallel_ranges(prims.size(), 1 << 16, std::max(1, threads - 1), copy);
+    if (collapser.joinable()) collapser.join();
+    if (collapse_error) std::rethrow_exception(collapse_error);
+    fm.blas_root = w.root;
+    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
   }
   f.blas_nodes = f.nodes.size();
   build_triangle_blocks(f);
