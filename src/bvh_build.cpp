@@ -85,10 +85,11 @@ struct Prim {
 };
 static_assert(sizeof(Prim) == sizeof(BvhPrimitive), "Prim mirrors BvhPrimitive");
 
+// Vector loads straight from the record (a memcpy into a Prim went through the stack, a
+// store and a reload on the binning loop's critical path); may_alias makes them legal.
+typedef float Vec4Alias __attribute__((vector_size(16), may_alias));
 inline Prim load(const BvhPrimitive& q) {
-  Prim p;
-  std::memcpy(&p, &q, sizeof p);
-  return p;
+  return Prim{*reinterpret_cast<const Vec4Alias*>(q.lo), *reinterpret_cast<const Vec4Alias*>(q.hi)};
 }
 
 // A primitive's centroid, rounded as every other centroid of the build.
