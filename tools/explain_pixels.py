@@ -2,7 +2,7 @@
 """Explains, pixel by pixel, where our render of a course scene differs from the course's.
 
 usage: tools/explain_pixels.py ENSEMBLE_DIR COURSE.png [--csv OUT.csv] [--crop X0 Y0 X1 Y1]
-                               [--markdown] [--list-unexplained]
+                               [--markdown] [--list-unexplained] [--model NAME=FILE ...]
 
 ENSEMBLE_DIR is what tools/explain_ensemble.py wrote: members.tsv and one render per
 member, "base" being the unperturbed one (with its moment file). Each pixel where base
@@ -10,12 +10,15 @@ differs from COURSE.png gets the first mechanism that explains it:
   rounding:FAMILY  some member of the ensemble attains the course's 8-bit value in all three
                    channels: the pixel is decided by rounding of that member's size.
                    Families, smallest first: arith (--precision double, --camera-rays
-                   exact, --frame world), camera (Position, Gaze, NearDistance by 1-2
-                   ulps), light (point lights by 1 ulp), epsilon (ShadowRayEpsilon by 1-2
-                   ulps of the camera's coordinates), sphere (r^2 by 1/4 to 4 ulps of
-                   |centre - eye|^2), combined (two of these at once), offset
-                   (--ray-offset robust, larger than rounding on large coordinates). The member named is the first attaining one in that
-                   order, smaller steps first; the CSV lists every attaining member.
+                   exact, --frame world, --hit-point ray), camera (Position, Gaze,
+                   NearDistance by 1-2 ulps), light (point lights by 1 ulp), epsilon
+                   (ShadowRayEpsilon by 1-2 ulps of the camera's coordinates), sphere (r^2
+                   by 1/4 to 4 ulps of |centre - eye|^2), combined (two of these at once),
+                   model (an independent model's value, --model: tools/whitted_probe.py
+                   with the course's float sphere test), offset (--ray-offset robust,
+                   larger than rounding on large coordinates). The member named is the
+                   first attaining one in that order, smaller steps first; the CSV lists
+                   every attaining member.
   bracketed:FAMILY no member attains it, but between our value and some member's lies the
                    course's, in every channel: the pixel passes from ours to the member's
                    over a perturbation of that member's size (a silhouette that the
@@ -45,12 +48,13 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from classify_pixels import classify, read_exr_channels, read_png  # noqa: E402
 
-FAMILIES = (("arith", ("double", "exact", "world")),
+FAMILIES = (("arith", ("double", "exact", "world", "ray")),
             ("camera", ("pos", "posb", "posc", "posd", "gaze", "gazeb", "gazec", "gazed", "near")),
             ("light", ("light", "lightb", "lightc", "lightd")),
             ("epsilon", ("eps",)),
             ("sphere", ("r2",)),
             ("combined", ()),
+            ("model", ()),
             ("offset", ("robust",)))
 MECHANISMS = ([f"rounding:{name}" for name, _ in FAMILIES] +
               [f"bracketed:{name}" for name, _ in FAMILIES] + ["boundary", "edge", "unexplained"])
@@ -59,6 +63,8 @@ MECHANISMS = ([f"rounding:{name}" for name, _ in FAMILIES] +
 def family(member):
     if "&" in member:
         return "combined"
+    if member.startswith("model:"):
+        return "model"
     stem = re.sub(r"[+-][\d.]+$", "", member)
     for name, stems in FAMILIES:
         if stem in stems:
@@ -84,6 +90,19 @@ def read_members(directory):
             name, what, step, image = line.rstrip("\n").split("\t")
             members.append((name, what, step, os.path.join(directory, image)))
     return members
+
+
+def read_model(path, base, width):
+    """An image that is base except at the pixels tools/whitted_probe.py --batch evaluated
+    (its lines "X Y  model R G B  course ..."), which take the model's 8-bit value."""
+    image = bytearray(base)
+    with open(path) as f:
+        for line in f:
+            fields = line.split()
+            if len(fields) >= 6 and fields[0].isdigit() and fields[2] == "model":
+                i = 3 * (int(fields[1]) * width + int(fields[0]))
+                image[i : i + 3] = bytes(int(v) for v in fields[3:6])
+    return image
 
 
 def explain(base, course, radiance, images, width, height, crop):
@@ -151,6 +170,10 @@ def main():
     parser.add_argument("--crop", nargs=4, type=int, metavar=("X0", "Y0", "X1", "Y1"))
     parser.add_argument("--markdown", action="store_true", help="print tables as Markdown")
     parser.add_argument("--list-unexplained", action="store_true")
+    parser.add_argument("--model", action="append", default=[], metavar="NAME=FILE",
+                        help="an independent model's values at the pixels it evaluated "
+                             "(tools/whitted_probe.py --batch output): a member of family "
+                             "model named model:NAME")
     args = parser.parse_args()
     members = read_members(args.ensemble)
     base_png = dict((m[0], m[3]) for m in members)["base"]
@@ -166,6 +189,10 @@ def main():
             mw, mh, images[name] = read_png(path)
             if (mw, mh) != (w, h):
                 sys.exit(f"{path}: {mw}x{mh}, base {w}x{h}")
+    for spec in args.model:
+        name, path = spec.split("=", 1)
+        images["model:" + name] = read_model(path, base, w)
+        members.append(("model:" + name, f"tools/whitted_probe.py model ({path})", "", path))
     crop = tuple(args.crop) if args.crop else (0, 0, w, h)
     rows = list(explain(base, course, radiance, images, w, h, crop))
     counts = {k: 0 for k in MECHANISMS}
