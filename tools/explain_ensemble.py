@@ -44,6 +44,10 @@ The members (an ulp is the spacing of float32 at the quantity's magnitude):
              the unit sphere): its rounding grows with the distance travelled
   A&B        members A and B at once (double or exact with pos±1 or light±1; ray with
              world, exact or double): the course's image carries all its roundings together
+  facing, geometric, cull
+             conventions, not roundings (--reflection-offset facing, --shadow-offset
+             geometric, --cull-back-faces where the flags do not cull already): they change
+             every pixel of a kind, so they only say the course may treat a pixel otherwise
   robust     --ray-offset robust: secondary rays start 8 ulps of the surface point's
              coordinates further out (larger than rounding where a point's coordinates
              are large: grass_desert's ground, scaled by 1e4, gets 8e-3; reported apart)
@@ -200,6 +204,15 @@ MEMBERS["world"] = ("--frame world (the scene rounded to float in the file's coo
                     "course holds it, instead of the camera's frame)", None, ["--frame", "world"])
 MEMBERS["ray"] = ("--hit-point ray (the hit point origin + t * direction, as the course forms it, "
                   "not rebuilt from the primitive)", None, ["--hit-point", "ray"])
+# Conventions, not roundings: each changes how the renderer treats every pixel of a kind,
+# so a pixel only they attain says the course may decide that pixel differently, not that
+# rounding does (explain_pixels.py's family convention, reported apart).
+MEMBERS["facing"] = ("--reflection-offset facing (a mirror seen from behind reflects from the "
+                     "viewer's side)", None, ["--reflection-offset", "facing"])
+MEMBERS["geometric"] = ("--shadow-offset geometric (shadow rays leave along the triangle's "
+                        "normal)", None, ["--shadow-offset", "geometric"])
+MEMBERS["cull"] = ("--cull-back-faces (camera and reflected rays ignore triangles facing away)",
+                   None, ["--cull-back-faces"])
 MEMBERS["robust"] = ("--ray-offset robust (+8 ulps of the point's coordinates on the offset)", None,
                      ["--ray-offset", "robust"])
 
@@ -224,9 +237,11 @@ for second in ("world", "exact", "double"):
     MEMBERS[f"ray&{second}"] = combine("ray", second)
 
 
-def applicable(name, root):
+def applicable(name, root, extra=()):
+    if name == "cull" and "--cull-back-faces" in extra:
+        return False
     if "&" in name:
-        return all(applicable(n, root) for n in name.split("&"))
+        return all(applicable(n, root, extra) for n in name.split("&"))
     if name.startswith("r2"):
         return root.find("Objects/Sphere") is not None
     if name.startswith("light"):
@@ -278,7 +293,7 @@ def main():
     for member in names:
         what, edit, flags = MEMBERS[member]
         root = ET.parse(args.scene).getroot()
-        if not applicable(member, root):
+        if not applicable(member, root, extra):
             continue
         directory = os.path.join(args.outdir, member)
         scene, step = args.scene, ""

@@ -16,7 +16,9 @@ differs from COURSE.png gets the first mechanism that explains it:
                    by 1/4 to 4 ulps of |centre - eye|^2), combined (two of these at once),
                    model (an independent model's value, --model: tools/whitted_probe.py
                    with the course's float sphere test), offset (--ray-offset robust,
-                   larger than rounding on large coordinates). The member named is the
+                   larger than rounding on large coordinates), convention (a different
+                   convention: --reflection-offset facing, --shadow-offset geometric,
+                   --cull-back-faces; not rounding). The member named is the
                    first attaining one in that order, smaller steps first; the CSV lists
                    every attaining member.
   bracketed:FAMILY no member attains it, but between our value and some member's lies the
@@ -55,7 +57,8 @@ FAMILIES = (("arith", ("double", "exact", "world", "ray")),
             ("sphere", ("r2",)),
             ("combined", ()),
             ("model", ()),
-            ("offset", ("robust",)))
+            ("offset", ("robust",)),
+            ("convention", ("facing", "geometric", "cull")))
 MECHANISMS = ([f"rounding:{name}" for name, _ in FAMILIES] +
               [f"bracketed:{name}" for name, _ in FAMILIES] + ["boundary", "edge", "unexplained"])
 
