@@ -208,7 +208,8 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
             (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0) |
             (options.robust_offset ? RT_FLAG_ROBUST_OFFSET : 0) |
-            (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0);
+            (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0) |
+            (options.ray_hit_point ? RT_FLAG_RAY_HIT_POINT : 0);
   f.fast_math = options.fast_math;
   if (options.precision == Precision::kAuto)
     throw std::logic_error("--precision auto reached flatten_scene unresolved (resolve_precision)");
