@@ -26,8 +26,8 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
   // shadows the point, and in a crease it can clear a neighbouring triangle, which lights it;
   // its images show both (README, "Figures"). --shadow-offset geometric uses the triangle's.
   real3 along = (sd->header->flags & RT_FLAG_GEOMETRIC_OFFSET) != 0 ? s->ng : s->n;
-  real3 origin = OffsetRayOrigin(s->p, along, sd->header->shadow_epsilon, s->scale,
-                                 RT_ROBUST_OFFSET(sd));
+  real3 origin =
+      OffsetRayOrigin(s->p, along, sd->header->shadow_epsilon, s->scale, RT_ROBUST_OFFSET(sd));
   if (!Unoccluded(sd, origin, ls.p_light - origin, s->time, rays)) return Vec3(0.0f);
   return EvaluateBsdf(sd, m, s->n, s->wo, ls.wi, ls.irradiance);
 }
@@ -39,9 +39,16 @@ RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
                                 RT_PRIVATE const Material* m, RaySampler rs, real3 l,
                                 RT_PRIVATE uint* rays) {
   LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
-  for (int i = 0; i < sd->header->num_lights; ++i)
-    l += ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);
-  return l;
+  // Summed per component, in the same order as l += c: the CPU reference receives l in two
+  // registers, and reassembling it whole went through memory (a store-forwarding stall).
+  real x = l.x, y = l.y, z = l.z;
+  for (int i = 0; i < sd->header->num_lights; ++i) {
+    real3 c = ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);
+    x += c.x;
+    y += c.y;
+    z += c.z;
+  }
+  return make_real3(x, y, z);
 }
 
 // The ray tree's shading: ambient plus the lights. A surface whose Blinn-Phong is black

@@ -9,7 +9,8 @@
 #include "mirror.h"
 
 RT_DEVICE real ConductorFresnel(RT_PRIVATE const Material* m, RT_PRIVATE const SurfacePoint* s) {
-  return FrConductor(fmax(Dot(s->n, s->wo), RT_R(0.0)), m->refraction_index, m->absorption_index);
+  // MaxF, not fmax, as in DielectricFresnel.
+  return FrConductor(MaxF(Dot(s->n, s->wo), RT_R(0.0)), m->refraction_index, m->absorption_index);
 }
 
 RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,

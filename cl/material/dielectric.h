@@ -23,7 +23,9 @@ RT_DEVICE DielectricEvent DielectricFresnel(RT_PRIVATE const Material* m,
   e.cos_o = Dot(s->n, s->wo);
   e.eta_i = s->front ? 1.0f : m->refraction_index;
   e.eta_t = s->front ? m->refraction_index : 1.0f;
-  e.fr = FrDielectric(fmax(e.cos_o, RT_R(0.0)), e.eta_i, e.eta_t, &e.cos_t);
+  // MaxF rather than fmax (a library call on the CPU): both give 0 for NaN, and -0 for +0
+  // changes no bit of the reflectance, whose only use of the cosine is products and sums.
+  e.fr = FrDielectric(MaxF(e.cos_o, RT_R(0.0)), e.eta_i, e.eta_t, &e.cos_t);
   return e;
 }
 
