@@ -23,6 +23,13 @@ RT_DEVICE real2 SampleConcentricDisk(real2 u) {
   return make_real2(r * CosR(theta), r * SinR(theta));
 }
 
+// The width and height of a pixel on the course camera's film: the same for every sample,
+// so computed once per pixel (CameraPixel) rather than divided out again per sample.
+RT_DEVICE real2 CourseFilmPixelSize(RT_GLOBAL const Camera* cam) {
+  return make_real2((cam->right - cam->left) / (real)cam->width,
+                    (cam->top - cam->bottom) / (real)cam->height);
+}
+
 // The direction of the course renderer's camera ray through film position (px, py): the
 // film point s = q + su u - sv v and s - e are formed in world space, in float, so their
 // rounding (up to 1e-3 pixel for a camera 30 units from the origin) is the course's. On
@@ -30,9 +37,11 @@ RT_DEVICE real2 SampleConcentricDisk(real2 u) {
 // the 8-bit value: hw1 windmill_smooth has 1,290 pixels off the course's image with exact
 // rays and 212 with these (README, "Figures"). Each operation and its order is the one that
 // matched (su from the pixel width, s summed left to right, d divided by its length).
-RT_DEVICE real3 CourseCameraDirection(RT_GLOBAL const Camera* cam, real px, real py) {
-  real su = (cam->right - cam->left) / (real)cam->width * px;
-  real sv = (cam->top - cam->bottom) / (real)cam->height * py;
+// `pixel_size` is CourseFilmPixelSize(cam).
+RT_DEVICE real3 CourseCameraDirection(RT_GLOBAL const Camera* cam, real2 pixel_size, real px,
+                                      real py) {
+  real su = pixel_size.x * px;
+  real sv = pixel_size.y * py;
   real3 s = ToReal3(cam->course_q) + ToReal3(cam->course_u) * su - ToReal3(cam->course_v) * sv;
   real3 d = s - ToReal3(cam->course_eye);
   real len = Length(d);
@@ -51,12 +60,14 @@ RT_DEVICE real3 ExactCameraDirection(RT_GLOBAL const Camera* cam, real px, real 
 }
 
 // The ray through film position (px, py) in pixels (x right, y down) at shutter time
-// `time`, through lens sample `lens` in [0,1)^2.
-RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real px, real py, real2 lens,
-                                real time) {
+// `time`, through lens sample `lens` in [0,1)^2; `course_pixel_size` as for
+// CourseCameraDirection.
+RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real2 course_pixel_size, real px,
+                                real py, real2 lens, real time) {
   RT_GLOBAL const Camera* cam = &sd->header->camera;
-  real3 dir = (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0 ? CourseCameraDirection(cam, px, py)
-                                                               : ExactCameraDirection(cam, px, py);
+  real3 dir = (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0
+                  ? CourseCameraDirection(cam, course_pixel_size, px, py)
+                  : ExactCameraDirection(cam, px, py);
   Ray ray = MakeRay(ToReal3(cam->position), dir, RT_INFINITY, time);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f) {
     // The focal plane lies focus_distance along the gaze; every lens point aims at where
@@ -85,6 +96,7 @@ typedef struct CameraPixel {
   real2 uv;
   PixelKey key;
   uint film_strata, lens_strata, time_strata;  // StratumKey* of RT_DIM_PIXEL, _LENS, _TIME.
+  real2 course_pixel_size;                     // CourseFilmPixelSize.
 } CameraPixel;
 
 RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int y) {
@@ -107,6 +119,7 @@ RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int
   }
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && cam->samples > 1)
     cp.time_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_TIME, RT_STRATA_SALT_1D);
+  cp.course_pixel_size = CourseFilmPixelSize(cam);
   return cp;
 }
 
@@ -119,8 +132,8 @@ typedef struct CameraSample {
   Ray ray;
 } CameraSample;
 
-RT_DEVICE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
-                                           RT_PRIVATE const CameraPixel* cp, uint sample) {
+RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
+                                                  RT_PRIVATE const CameraPixel* cp, uint sample) {
   RT_GLOBAL const Camera* cam = &sd->header->camera;
   CameraSample cs;
   cs.key = PixelSampleKey(cp->key, sample);
@@ -133,7 +146,8 @@ RT_DEVICE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
   real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR))
     time = Stratified1DKeyed(cs.key, RT_DIM_TIME, cp->time_strata);
-  cs.ray = GenerateCameraRay(sd, (real)cp->x + cs.film.x, (real)cp->y + cs.film.y, lens, time);
+  cs.ray = GenerateCameraRay(sd, cp->course_pixel_size, (real)cp->x + cs.film.x,
+                             (real)cp->y + cs.film.y, lens, time);
   return cs;
 }
 

@@ -80,7 +80,7 @@ RT_DEVICE uint StratumKey(uint pixel_hash, uint seed, uint dimension, uint salt)
 // `stratum_key` (StratumKey of the dimension); random when the sample count is not a
 // perfect square. One sample per pixel is one stratum, whose point is xi itself
 // ((0 + xi) * 1, exactly), so the permutation is skipped.
-RT_DEVICE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint stratum_key) {
+RT_DEVICE_INLINE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint stratum_key) {
   real2 xi = Random2D(k, dimension);
   if (k.strata <= 1u) return xi;
   uint stratum = PermutationElement(k.sample, k.samples, stratum_key);

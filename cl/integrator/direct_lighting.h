@@ -51,6 +51,12 @@ RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
   return make_real3(x, y, z);
 }
 
+// The ambient term of a material of ambient reflectance ka (Li reads ka alone where nothing
+// else of the material is needed).
+RT_DEVICE real3 AmbientRadiance(RT_PRIVATE const SceneData* sd, float3 ka) {
+  return ToReal3(ka * sd->header->ambient_light);
+}
+
 // The ray tree's shading: ambient plus the lights. A surface whose Blinn-Phong is black
 // (a mirror, metal or glass lit only through the rays it scatters) would add an exact zero
 // per light sample, so it takes no samples and casts no shadow rays: the image is the same
@@ -60,7 +66,7 @@ RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
 RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
                                RT_PRIVATE const Material* m, RaySampler rs, RT_PRIVATE uint* rays) {
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m->unlit) return ToReal3(m->diffuse);
-  real3 ambient = ToReal3(m->ambient * sd->header->ambient_light);
+  real3 ambient = AmbientRadiance(sd, m->ambient);
   // Without lights, the ambient term alone: not even the light context is made.
   if (sd->header->num_lights == 0) return ambient;
   int blinn_phong = !RT_HAS(sd, RT_FEATURE_BRDF) || m->brdf == RT_BRDF_ORIGINAL_BLINN_PHONG;

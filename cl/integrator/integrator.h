@@ -35,8 +35,8 @@ RT_DEVICE int SurfacePartsRead(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
 // texture is looked up); *rays counts every ray cast (camera, secondary, shadow).
 // Per ray of the tree: intersect, build the surface point, attenuate inside a medium,
 // evaluate the material, add direct light, scatter.
-RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraSample* cs,
-                   real2 pixel_uv, RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
+RT_DEVICE_INLINE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraSample* cs,
+                          real2 pixel_uv, RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
   RayStack stack;
@@ -55,11 +55,18 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraSample
       continue;
     }
     int record = info != 0 && task.depth == 0;
-    SurfacePoint s = ComputeSurfaceParts(sd, &task.ray, &hit,
-                                         SurfacePartsRead(sd, &task, max_depth, hit, record));
-    if (record) RecordPrimaryHit(info, hit, s.n);
+    int parts = SurfacePartsRead(sd, &task, max_depth, hit, record);
     if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && task.inside)
       task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction));
+    if (parts == 0) {
+      // A last hit lit by the ambient term alone (SurfacePartsRead), as DirectLighting would
+      // light it: neither the surface point nor a copy of the material is made.
+      int material = sd->instances[hit.instance].material;
+      radiance += task.weight * AmbientRadiance(sd, sd->materials[material].ambient);
+      continue;
+    }
+    SurfacePoint s = ComputeSurfaceParts(sd, &task.ray, &hit, parts);
+    if (record) RecordPrimaryHit(info, hit, s.n);
     // An object light seen by this ray (a camera ray, or one a mirror or glass continued).
     if (RT_HAS(sd, RT_FEATURE_OBJECT_LIGHTS)) radiance += task.weight * EmittedRadiance(sd, &s);
     Material m = EvaluateMaterial(sd, &s);
@@ -78,9 +85,10 @@ RT_DEVICE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraSample
 
 // Camera sample `sample` of a pixel: its radiance, and its reconstruction-filter weight in
 // *weight. `info` (may be null) receives the facts of the first camera ray.
-RT_DEVICE real3 RenderSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraPixel* cp,
-                             uint sample, RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
-                             RT_PRIVATE uint* rays) {
+RT_DEVICE_INLINE real3 RenderSample(RT_PRIVATE const SceneData* sd,
+                                    RT_PRIVATE const CameraPixel* cp, uint sample,
+                                    RT_PRIVATE real* weight, RT_PRIVATE PrimaryInfo* info,
+                                    RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
   CameraSample cs = GeneratePixelSample(sd, cp, sample);
   *weight = 1.0f;

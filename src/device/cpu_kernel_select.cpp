@@ -11,7 +11,7 @@ CpuKernel select_cpu_kernel(bool double_precision) {
 #ifdef RT_CPU_KERNEL_AVX2
   const char* forced = std::getenv("RT_CPU_ISA");
   const bool baseline = forced != nullptr && std::strcmp(forced, "baseline") == 0;
-  if (!baseline && __builtin_cpu_supports("avx2"))
+  if (!baseline && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi2"))
     return {accumulate_pixel_float_avx2, intersect_closest_float_avx2, "avx2"};
 #endif
   return {accumulate_pixel_float, intersect_closest_float, "baseline"};
