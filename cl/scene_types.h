@@ -185,6 +185,9 @@ typedef struct TriangleNormals {
 #define RT_FLAG_COURSE_CAMERA 2048
 // Shadow rays leave along the geometric normal instead of the course's shading normal.
 #define RT_FLAG_GEOMETRIC_OFFSET 4096
+// --hit-point ray: the surface point is the ray's origin + t * direction, as the course's
+// renderer forms it, not rebuilt from the primitive (cl/surface.h).
+#define RT_FLAG_RAY_HIT_POINT 8192
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \

@@ -34,13 +34,29 @@ struct BinaryBvhNode {
   int count;
 };
 
+// A primitive as the builder sees it: its box and its index, 32 bytes, moved as a whole
+// when the builder partitions (so every pass reads memory in order). The caller fills
+// `lo`, `hi` and `index`; the build leaves them in leaf order.
+struct alignas(16) BvhPrimitive {
+  BvhPrimitive() {}  // Left unset: arrays of millions are filled in parallel, not zeroed first.
+  float lo[3];
+  int index;
+  float hi[3];
+  int unused;
+};
+
 struct BvhBuildResult {
   int root = -1;
   int depth = 0;
 };
 
-// Builds a BVH over `boxes` into `nodes`. Leaves refer to positions first..first+count-1
-// of `order` shifted by `prim_offset`; the caller stores its primitives in that order.
+// Builds a BVH over `prims` into `nodes`, reordering `prims`: leaves refer to positions
+// first..first+count-1 of it, shifted by `prim_offset`; the caller stores its primitives in
+// that order (prims[i].index). The tree and the order do not depend on options.threads.
+BvhBuildResult build_bvh(std::vector<BvhPrimitive>& prims, const BvhOptions& options, int max_leaf,
+                         int prim_offset, std::vector<BinaryBvhNode>& nodes);
+
+// The same over `boxes`, primitive i having box i; `order` receives the primitives' order.
 BvhBuildResult build_bvh(const std::vector<Aabb>& boxes, const BvhOptions& options, int max_leaf,
                          int prim_offset, std::vector<BinaryBvhNode>& nodes,
                          std::vector<int>& order);

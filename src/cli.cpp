@@ -83,6 +83,12 @@ OptionTable<RenderOptions> make_device_table() {
               "which normal a shadow ray's origin moves along by ShadowRayEpsilon: course: the "
               "shading normal (interpolated on smooth meshes), as the course's renderer; "
               "geometric: the triangle's own, which never starts it behind the surface")
+      .choice("--hit-point",
+              std::vector<std::pair<std::string, bool>>{{"surface", false}, {"ray", true}},
+              RT_FIELD(ray_hit_point),
+              "where a hit lies: surface: rebuilt from the primitive (barycentrics, the unit "
+              "sphere), exact whatever the distance travelled; ray: origin + t * direction, as "
+              "the course's renderer forms it (tools/explain_ensemble.py's member)")
       .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)

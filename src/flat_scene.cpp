@@ -4,12 +4,15 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 
 #include "bvh_wide.h"
-#include "triangle_blocks.h"
 #include "cl/features.h"
 #include "cl/material/brdf.h"
+#include "triangle_blocks.h"
+#include "util/parallel_for.h"
 #include "world_frame.h"
 
 namespace rt {
@@ -30,6 +33,27 @@ static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
 namespace {
 
 bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+// The boxes of a mesh's triangles in its frame (vertices relative to `origin`, subtracted
+// in double and rounded to float, as they are stored), for the BVH build.
+std::vector<BvhPrimitive> triangle_primitives(const MeshDesc& mesh, Vec3d origin, int threads) {
+  std::vector<BvhPrimitive> prims(mesh.triangles.size());
+  parallel_ranges(prims.size(), 1 << 16, resolve_threads(threads),
+                  [&](size_t, size_t from, size_t to) {
+                    for (size_t i = from; i < to; ++i) {
+                      Aabb box;
+                      for (int k = 0; k < 3; ++k) {
+                        float3 p = to_float3(mesh.positions[mesh.triangles[i][k]] - origin);
+                        box.grow(p.x, p.y, p.z);
+                      }
+                      BvhPrimitive& prim = prims[i];
+                      for (int k = 0; k < 3; ++k) prim.lo[k] = box.lo[k], prim.hi[k] = box.hi[k];
+                      prim.index = static_cast<int>(i);
+                      prim.unused = 0;
+                    }
+                  });
+  return prims;
+}
 
 }  // namespace
 
@@ -81,50 +105,79 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     FlatMesh& fm = f.meshes[mi];
     fm.origin = mesh_frame_origin(mesh);
     auto local = [&](int v) { return to_float3(mesh.positions[v] - fm.origin); };
-    std::vector<Aabb> boxes(mesh.triangles.size());
-    for (size_t i = 0; i < mesh.triangles.size(); ++i)
-      for (int k = 0; k < 3; ++k) {
-        float3 p = local(mesh.triangles[i][k]);
-        boxes[i].grow(p.x, p.y, p.z);
-      }
-    std::vector<int> order;
+    std::vector<BvhPrimitive> prims = triangle_primitives(mesh, fm.origin, options.bvh.threads);
     int offset = static_cast<int>(f.triangles.size());
     fm.first_triangle = offset;
     std::vector<BinaryBvhNode> binary;
-    BvhBuildResult r = build_bvh(boxes, options.bvh, options.bvh.max_leaf, offset, binary, order);
-    WideBvhResult w = collapse_bvh(binary, r.root, f.nodes);
-    fm.blas_root = w.root;
-    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
-    for (auto& b : boxes) fm.box.grow(b);
+    BvhBuildResult r = build_bvh(prims, options.bvh, options.bvh.max_leaf, offset, binary);
+    // Room for the wide nodes, at most one per interior binary node (and the root), so that
+    // the collapse does not copy the array as it grows; the pages past its end stay untouched.
+    const size_t most_nodes = f.nodes.size() + binary.size() / 2 + 1;
+    if (f.nodes.capacity() < most_nodes) f.nodes.reserve(std::max(most_nodes, 2 * f.nodes.size()));
+    fm.box.grow(binary[r.root].lo[0], binary[r.root].lo[1], binary[r.root].lo[2]);
+    fm.box.grow(binary[r.root].hi[0], binary[r.root].hi[1], binary[r.root].hi[2]);
+    // The collapse (serial) runs beside the copies below, which need only the order; the
+    // binary tree is freed as soon as it is done with, for peak memory.
+    const int threads = resolve_threads(options.bvh.threads);
+    WideBvhResult w;
+    std::exception_ptr collapse_error;
+    auto collapse = [&] {
+      try {
+        w = collapse_bvh(binary, r.root, f.nodes);
+      } catch (...) {
+        collapse_error = std::current_exception();
+      }
+      std::vector<BinaryBvhNode>().swap(binary);
+    };
+    std::thread collapser;
+    struct JoinOnExit {  // Also when a copy below throws: a joinable thread must not die.
+      std::thread& t;
+      ~JoinOnExit() {
+        if (t.joinable()) t.join();
+      }
+    } join_on_exit{collapser};
+    if (threads > 1)
+      collapser = std::thread(collapse);
+    else
+      collapse();
     std::vector<Vec3d> vn;
     if (mesh.smooth) vn = vertex_normals(mesh);
-    for (int i : order) {
-      const auto& t = mesh.triangles[i];
-      Triangle tri;
-      tri.v0 = local(t[0]);
-      tri.v1 = local(t[1]);
-      tri.v2 = local(t[2]);
-      f.triangles.push_back(tri);
-      if (!any_smooth && !any_textured) continue;
-      TriangleNormals tn{};
-      if (mesh.smooth) {
-        tn.n0 = to_float3(vn[t[0]]);
-        tn.n1 = to_float3(vn[t[1]]);
-        tn.n2 = to_float3(vn[t[2]]);
+    // The triangles in leaf order, in parallel: each position is written once, from its
+    // own primitive, so the bytes do not depend on the threads.
+    const size_t base = f.triangles.size();
+    f.triangles.resize(base + prims.size());
+    if (any_smooth) f.normals.resize(base + prims.size());
+    if (any_textured) f.triangle_uvs.resize(base + prims.size());
+    auto copy = [&](size_t, size_t from, size_t to) {
+      for (size_t i = from; i < to; ++i) {
+        const auto& t = mesh.triangles[prims[i].index];
+        Triangle& tri = f.triangles[base + i];
+        tri.v0 = local(t[0]);
+        tri.v1 = local(t[1]);
+        tri.v2 = local(t[2]);
+        if (mesh.smooth) {
+          TriangleNormals& tn = f.normals[base + i];
+          tn.n0 = to_float3(vn[t[0]]);
+          tn.n1 = to_float3(vn[t[1]]);
+          tn.n2 = to_float3(vn[t[2]]);
+        }
+        if (any_textured && !mesh.uvs.empty()) {
+          auto at = [&](int k) {
+            return make_float2(static_cast<float>(mesh.uvs[t[k]][0]),
+                               static_cast<float>(mesh.uvs[t[k]][1]));
+          };
+          TriangleUV& uv = f.triangle_uvs[base + i];
+          uv.uv0 = at(0);
+          uv.uv1 = at(1);
+          uv.uv2 = at(2);
+        }
       }
-      if (any_smooth) f.normals.push_back(tn);
-      TriangleUV uv{};
-      if (!mesh.uvs.empty()) {
-        auto at = [&](int k) {
-          return make_float2(static_cast<float>(mesh.uvs[t[k]][0]),
-                             static_cast<float>(mesh.uvs[t[k]][1]));
-        };
-        uv.uv0 = at(0);
-        uv.uv1 = at(1);
-        uv.uv2 = at(2);
-      }
-      if (any_textured) f.triangle_uvs.push_back(uv);
-    }
+    };
+    parallel_ranges(prims.size(), 1 << 16, std::max(1, threads - 1), copy);
+    if (collapser.joinable()) collapser.join();
+    if (collapse_error) std::rethrow_exception(collapse_error);
+    fm.blas_root = w.root;
+    f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
   }
   f.blas_nodes = f.nodes.size();
   build_triangle_blocks(f);
@@ -155,7 +208,8 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
             (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
             (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0) |
             (options.robust_offset ? RT_FLAG_ROBUST_OFFSET : 0) |
-            (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0);
+            (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0) |
+            (options.ray_hit_point ? RT_FLAG_RAY_HIT_POINT : 0);
   f.fast_math = options.fast_math;
   if (options.precision == Precision::kAuto)
     throw std::logic_error("--precision auto reached flatten_scene unresolved (resolve_precision)");

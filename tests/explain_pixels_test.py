@@ -3,12 +3,15 @@
 
 usage: tests/explain_pixels_test.py synthetic
        tests/explain_pixels_test.py crop RAYTRACER SHARED_SCENES_DIR WORK_DIR
+       tests/explain_pixels_test.py model_pixel SHARED_SCENES_DIR
 
 synthetic: the arithmetic on made-up inputs (float ulps, the perturbed radii, the order
 of the members, each mechanism on a 4x3 image). crop: hw1 spheres rendered with six
 members of the ensemble; every pixel of a crop around its green sphere where our image
 differs from the course's must be attained by a member (rounding), with 100 or more such
-pixels so that the assertion is not empty. Exits 77 (CTest's skip) when the course's
+pixels so that the assertion is not empty. model_pixel: hw1 spheres_mirror (413, 413),
+which no member moves, is the course's value under tools/whitted_probe.py's float sphere
+test and ours under its double one. Exits 77 (CTest's skip) when the course's
 scene is missing.
 """
 import math
@@ -90,6 +93,25 @@ def synthetic():
     check(rows[(3, 0)] == ("bracketed:sphere", ["(r2+1)"]), f"(3,0): {rows[(3, 0)]}")
     reach = exp.member_reach(base, course, bytearray(course), w, (0, 0, w, h))
     check(reach == (4, 4, 0), f"reach of a member equal to the course's image: {reach}")
+    # The hit point member is our arithmetic; the independent model ranks after the
+    # combined members, the conventions after everything.
+    order = sorted(["facing", "model:f32_sphere", "ray&world", "robust", "ray", "r2-1", "cull"],
+                   key=exp.rank)
+    check(order == ["ray", "r2-1", "ray&world", "model:f32_sphere", "robust", "cull", "facing"],
+          f"member order with model and conventions {order}")
+    # A model file (tools/whitted_probe.py --batch lines) sets only the pixels it lists.
+    path = os.path.join(os.environ.get("TMPDIR", "/tmp"), f"explain_model_{os.getpid()}.txt")
+    with open(path, "w") as f:
+        f.write("3 0  model 10 10 10  course 10 10 10  ours 50 10 10  10.5 10.5 10.5  c course\n"
+                "class c: model equals course: 1\n")
+    model = exp.read_model(path, base, w)
+    os.remove(path)
+    check(model[9:12] == course[9:12] and model[:9] == base[:9] and model[12:] == base[12:],
+          "model image")
+    members = {"model:f32_sphere": model}
+    rows = {(x, y): (mech, att) for x, y, _, mech, att in
+            exp.explain(base, course, radiance, members, w, h, (0, 0, w, h))}
+    check(rows[(3, 0)] == ("rounding:model", ["model:f32_sphere"]), f"(3,0): {rows[(3, 0)]}")
     print("synthetic: ok")
 
 
@@ -117,6 +139,34 @@ def crop(raytracer, shared, work):
     print("crop: ok")
 
 
+def model_pixel(shared):
+    """hw1 spheres_mirror (413, 413), the one pixel of that image no member of the renderer's
+    ensemble moves: ours 198 192 115, the course's 198 192 116. The independent tracer gives
+    ours with its double-precision sphere test and the course's with the course's textbook
+    test in float, whose normal (p - c) / r is not of unit length."""
+    scene = os.path.join(shared, "hw1", "spheres_mirror.xml")
+    course = os.path.join(shared, "hw1", "reference", "spheres_mirror.png")
+    if not (os.path.exists(scene) and os.path.exists(course)):
+        print(f"SKIP: {scene} or {course} is not present (../shared/scenes)")
+        sys.exit(77)
+    from classify_pixels import read_png
+    w, _, image = read_png(course)
+    i = 3 * (413 * w + 413)
+    check(list(image[i : i + 3]) == [198, 192, 116], f"course pixel {list(image[i : i + 3])}")
+    probe = [sys.executable, os.path.join(TOOLS, "whitted_probe.py"), scene, "413", "413",
+             "--cull-back-faces", "--quiet"]
+    values = {}
+    for sphere in ("double", "f32_abc", "f32_shirley"):
+        out = subprocess.run(probe + ["--set", f"sphere={sphere}"], check=True,
+                             capture_output=True, text=True).stdout
+        values[sphere] = out.split("8-bit")[1].split()
+        print(f"sphere={sphere}: {out.strip()}")
+    check(values["double"] == ["198", "192", "115"], f"double sphere test {values['double']}")
+    check(values["f32_abc"] == values["f32_shirley"] == ["198", "192", "116"],
+          f"float sphere tests {values['f32_abc']} {values['f32_shirley']}")
+    print("model_pixel: ok")
+
+
 CROP = ["260", "80", "460", "280"]  # The red sphere and the green one to its left.
 
 if __name__ == "__main__":
@@ -124,5 +174,7 @@ if __name__ == "__main__":
         synthetic()
     elif sys.argv[1:2] == ["crop"] and len(sys.argv) == 5:
         crop(*sys.argv[2:5])
+    elif sys.argv[1:2] == ["model_pixel"] and len(sys.argv) == 3:
+        model_pixel(sys.argv[2])
     else:
         sys.exit(__doc__)

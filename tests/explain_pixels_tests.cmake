@@ -9,11 +9,14 @@ if(Python3_Interpreter_FOUND)
   add_test(NAME explain_pixels.spheres_crop
            COMMAND ${Python3_EXECUTABLE} ${rt_explain} crop $<TARGET_FILE:raytracer>
                    ${RT_SHARED_SCENES_DIR} ${CMAKE_CURRENT_BINARY_DIR}/explain_spheres)
+  add_test(NAME explain_pixels.spheres_mirror_model
+           COMMAND ${Python3_EXECUTABLE} ${rt_explain} model_pixel ${RT_SHARED_SCENES_DIR})
 else()
-  foreach(name synthetic spheres_crop)
+  foreach(name synthetic spheres_crop spheres_mirror_model)
     add_test(NAME explain_pixels.${name} COMMAND sh -c
              "echo 'SKIP: no Python 3 interpreter (install python3)'; exit 77")
   endforeach()
 endif()
-set_tests_properties(explain_pixels.synthetic explain_pixels.spheres_crop PROPERTIES
+set_tests_properties(explain_pixels.synthetic explain_pixels.spheres_crop
+                     explain_pixels.spheres_mirror_model PROPERTIES
                      SKIP_RETURN_CODE 77 TIMEOUT 120)

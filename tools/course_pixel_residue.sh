@@ -26,7 +26,21 @@ for name in "$@"; do
   # shellcheck disable=SC2086  # The flags are words.
   python3 "$here/tools/explain_ensemble.py" "$scenes/$scene" "$work/$name" \
     --raytracer "$build/raytracer" -- $flags 2> /dev/null
+  # On hw1 scenes the independent double-precision tracer evaluates each differing pixel
+  # with the course's textbook sphere test in float (its hit point o + t d off the sphere by
+  # the float root's error, its normal (p - c) / r not of unit length): a member of its own.
+  model=()
+  if [[ $name == hw1.* ]]; then
+    base="$(awk -F '\t' '$1 == "base" { print $4 }' "$work/$name/members.tsv")"
+    python3 "$here/tools/classify_pixels.py" "$work/$name/$base" \
+      "$scenes/$reference" --list > "$work/$name/differing.txt"
+    # shellcheck disable=SC2086
+    if python3 "$here/tools/whitted_probe.py" "$scenes/$scene" 0 0 $flags --set sphere=f32_abc \
+      --batch "$work/$name/differing.txt" > "$work/$name/model_f32_sphere.txt"; then
+      model=(--model "f32_sphere=$work/$name/model_f32_sphere.txt")
+    fi
+  fi
   python3 "$here/tools/explain_pixels.py" "$work/$name" "$scenes/$reference" --markdown \
-    --list-unexplained --csv "$csv_dir/$name.csv"
+    --list-unexplained --csv "$csv_dir/$name.csv" "${model[@]}"
   echo
 done

@@ -39,8 +39,15 @@ The members (an ulp is the spacing of float32 at the quantity's magnitude):
   double     --precision double: the whole renderer's arithmetic in double
   world      --frame world: the scene rounded to float in the file's coordinates, as the
              course holds it, not in the camera's frame (meshes keep their own frames)
-  A&B        members A and B at once (double or exact with pos±1 or light±1): the
-             course's image carries all its roundings together
+  ray        --hit-point ray: the hit point formed as origin + t * direction, as the
+             course's renderer forms it, instead of rebuilt from the primitive (barycentrics,
+             the unit sphere): its rounding grows with the distance travelled
+  A&B        members A and B at once (double or exact with pos±1 or light±1; ray with
+             world, exact or double): the course's image carries all its roundings together
+  facing, geometric, cull
+             conventions, not roundings (--reflection-offset facing, --shadow-offset
+             geometric, --cull-back-faces where the flags do not cull already): they change
+             every pixel of a kind, so they only say the course may treat a pixel otherwise
   robust     --ray-offset robust: secondary rays start 8 ulps of the surface point's
              coordinates further out (larger than rounding where a point's coordinates
              are large: grass_desert's ground, scaled by 1e4, gets 8e-3; reported apart)
@@ -195,6 +202,17 @@ MEMBERS["exact"] = ("--camera-rays exact (no world-space float rounding of the c
 MEMBERS["double"] = ("--precision double (our arithmetic in double)", None, ["--precision", "double"])
 MEMBERS["world"] = ("--frame world (the scene rounded to float in the file's coordinates, as the "
                     "course holds it, instead of the camera's frame)", None, ["--frame", "world"])
+MEMBERS["ray"] = ("--hit-point ray (the hit point origin + t * direction, as the course forms it, "
+                  "not rebuilt from the primitive)", None, ["--hit-point", "ray"])
+# Conventions, not roundings: each changes how the renderer treats every pixel of a kind,
+# so a pixel only they attain says the course may decide that pixel differently, not that
+# rounding does (explain_pixels.py's family convention, reported apart).
+MEMBERS["facing"] = ("--reflection-offset facing (a mirror seen from behind reflects from the "
+                     "viewer's side)", None, ["--reflection-offset", "facing"])
+MEMBERS["geometric"] = ("--shadow-offset geometric (shadow rays leave along the triangle's "
+                        "normal)", None, ["--shadow-offset", "geometric"])
+MEMBERS["cull"] = ("--cull-back-faces (camera and reflected rays ignore triangles facing away)",
+                   None, ["--cull-back-faces"])
 MEMBERS["robust"] = ("--ray-offset robust (+8 ulps of the point's coordinates on the offset)", None,
                      ["--ray-offset", "robust"])
 
@@ -214,11 +232,16 @@ def combine(*names):
 for first in ("double", "exact"):
     for second in ("pos+1", "pos-1", "light+1", "light-1"):
         MEMBERS[f"{first}&{second}"] = combine(first, second)
+# The course's hit point in the course's coordinates, and with each of our other roundings.
+for second in ("world", "exact", "double"):
+    MEMBERS[f"ray&{second}"] = combine("ray", second)
 
 
-def applicable(name, root):
+def applicable(name, root, extra=()):
+    if name == "cull" and "--cull-back-faces" in extra:
+        return False
     if "&" in name:
-        return all(applicable(n, root) for n in name.split("&"))
+        return all(applicable(n, root, extra) for n in name.split("&"))
     if name.startswith("r2"):
         return root.find("Objects/Sphere") is not None
     if name.startswith("light"):
@@ -270,7 +293,7 @@ def main():
     for member in names:
         what, edit, flags = MEMBERS[member]
         root = ET.parse(args.scene).getroot()
-        if not applicable(member, root):
+        if not applicable(member, root, extra):
             continue
         directory = os.path.join(args.outdir, member)
         scene, step = args.scene, ""

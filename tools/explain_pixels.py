@@ -2,7 +2,7 @@
 """Explains, pixel by pixel, where our render of a course scene differs from the course's.
 
 usage: tools/explain_pixels.py ENSEMBLE_DIR COURSE.png [--csv OUT.csv] [--crop X0 Y0 X1 Y1]
-                               [--markdown] [--list-unexplained]
+                               [--markdown] [--list-unexplained] [--model NAME=FILE ...]
 
 ENSEMBLE_DIR is what tools/explain_ensemble.py wrote: members.tsv and one render per
 member, "base" being the unperturbed one (with its moment file). Each pixel where base
@@ -10,12 +10,15 @@ differs from COURSE.png gets the first mechanism that explains it:
   rounding:FAMILY  some member of the ensemble attains the course's 8-bit value in all three
                    channels: the pixel is decided by rounding of that member's size.
                    Families, smallest first: arith (--precision double, --camera-rays
-                   exact, --frame world), camera (Position, Gaze, NearDistance by 1-2
-                   ulps), light (point lights by 1 ulp), epsilon (ShadowRayEpsilon by 1-2
-                   ulps of the camera's coordinates), sphere (r^2 by 1/4 to 4 ulps of
-                   |centre - eye|^2), combined (two of these at once), offset
-                   (--ray-offset robust, larger than rounding on large coordinates). The member named is the first attaining one in that
-                   order, smaller steps first; the CSV lists every attaining member.
+                   exact, --frame world, --hit-point ray), camera (Position, Gaze,
+                   NearDistance by 1-2 ulps), light (point lights by 1 ulp), epsilon
+                   (ShadowRayEpsilon by 1-2 ulps of the camera's coordinates), sphere (r^2
+                   by 1/4 to 4 ulps of |centre - eye|^2), combined (two of these at once),
+                   model (an independent model's value, --model: tools/whitted_probe.py
+                   with the course's float sphere test), offset (--ray-offset robust,
+                   larger than rounding on large coordinates). The member named is the
+                   first attaining one in that order, smaller steps first; the CSV lists
+                   every attaining member.
   bracketed:FAMILY no member attains it, but between our value and some member's lies the
                    course's, in every channel: the pixel passes from ours to the member's
                    over a perturbation of that member's size (a silhouette that the
@@ -29,6 +32,10 @@ differs from COURSE.png gets the first mechanism that explains it:
   edge             our value occurs (within a level) at a neighbouring pixel of the
                    course's image (classify_pixels.py's b): an edge displaced by under a
                    pixel.
+  convention       none of these, but a convention member attains it (--reflection-offset
+                   facing, --shadow-offset geometric, --cull-back-faces): these change
+                   every pixel of a kind, so this says only that the course may treat the
+                   pixel otherwise; it does not count as explained.
   unexplained      none of these.
 Prints the table of mechanisms; per member, how many differing pixels it attains, of how
 many it is the smallest attaining member, how many pixels it changes and how many of the
@@ -45,20 +52,27 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from classify_pixels import classify, read_exr_channels, read_png  # noqa: E402
 
-FAMILIES = (("arith", ("double", "exact", "world")),
+FAMILIES = (("arith", ("double", "exact", "world", "ray")),
             ("camera", ("pos", "posb", "posc", "posd", "gaze", "gazeb", "gazec", "gazed", "near")),
             ("light", ("light", "lightb", "lightc", "lightd")),
             ("epsilon", ("eps",)),
             ("sphere", ("r2",)),
             ("combined", ()),
-            ("offset", ("robust",)))
-MECHANISMS = ([f"rounding:{name}" for name, _ in FAMILIES] +
-              [f"bracketed:{name}" for name, _ in FAMILIES] + ["boundary", "edge", "unexplained"])
+            ("model", ()),
+            ("offset", ("robust",)),
+            ("convention", ("facing", "geometric", "cull")))
+# Conventions change every pixel of a kind (5 % of grass_desert), so they explain nothing:
+# a pixel only they attain is listed as "convention", after the weaker classes.
+EVIDENCE = [name for name, _ in FAMILIES if name != "convention"]
+MECHANISMS = ([f"rounding:{name}" for name in EVIDENCE] + [f"bracketed:{name}" for name in EVIDENCE]
+              + ["boundary", "edge", "convention", "unexplained"])
 
 
 def family(member):
     if "&" in member:
         return "combined"
+    if member.startswith("model:"):
+        return "model"
     stem = re.sub(r"[+-][\d.]+$", "", member)
     for name, stems in FAMILIES:
         if stem in stems:
@@ -86,6 +100,19 @@ def read_members(directory):
     return members
 
 
+def read_model(path, base, width):
+    """An image that is base except at the pixels tools/whitted_probe.py --batch evaluated
+    (its lines "X Y  model R G B  course ..."), which take the model's 8-bit value."""
+    image = bytearray(base)
+    with open(path) as f:
+        for line in f:
+            fields = line.split()
+            if len(fields) >= 6 and fields[0].isdigit() and fields[2] == "model":
+                i = 3 * (int(fields[1]) * width + int(fields[0]))
+                image[i : i + 3] = bytes(int(v) for v in fields[3:6])
+    return image
+
+
 def explain(base, course, radiance, images, width, height, crop):
     """Yields (x, y, class, mechanism, attaining members) for every differing pixel."""
     x0, y0, x1, y1 = crop
@@ -96,11 +123,13 @@ def explain(base, course, radiance, images, width, height, crop):
         i = 3 * (y * width + x)
         target = course[i : i + 3]
         attaining = [m for m in order if images[m][i : i + 3] == target]
+        evidence = [m for m in attaining if family(m) != "convention"]
         ours = base[i : i + 3]
-        between = [m for m in order if all(min(o, v) <= t <= max(o, v)
-                                            for o, v, t in zip(ours, images[m][i : i + 3], target))]
-        if attaining:
-            mechanism = "rounding:" + family(attaining[0])
+        between = [m for m in order if family(m) != "convention" and
+                   all(min(o, v) <= t <= max(o, v)
+                       for o, v, t in zip(ours, images[m][i : i + 3], target))]
+        if evidence:
+            mechanism = "rounding:" + family(evidence[0])
         elif between:
             mechanism = "bracketed:" + family(between[0])
             attaining = ["(" + m + ")" for m in between]
@@ -108,6 +137,8 @@ def explain(base, course, radiance, images, width, height, crop):
             mechanism = "boundary"
         elif cls == "b":
             mechanism = "edge"
+        elif attaining:
+            mechanism = "convention"
         else:
             mechanism = "unexplained"
         yield x, y, cls, mechanism, attaining
@@ -151,6 +182,10 @@ def main():
     parser.add_argument("--crop", nargs=4, type=int, metavar=("X0", "Y0", "X1", "Y1"))
     parser.add_argument("--markdown", action="store_true", help="print tables as Markdown")
     parser.add_argument("--list-unexplained", action="store_true")
+    parser.add_argument("--model", action="append", default=[], metavar="NAME=FILE",
+                        help="an independent model's values at the pixels it evaluated "
+                             "(tools/whitted_probe.py --batch output): a member of family "
+                             "model named model:NAME")
     args = parser.parse_args()
     members = read_members(args.ensemble)
     base_png = dict((m[0], m[3]) for m in members)["base"]
@@ -166,6 +201,10 @@ def main():
             mw, mh, images[name] = read_png(path)
             if (mw, mh) != (w, h):
                 sys.exit(f"{path}: {mw}x{mh}, base {w}x{h}")
+    for spec in args.model:
+        name, path = spec.split("=", 1)
+        images["model:" + name] = read_model(path, base, w)
+        members.append(("model:" + name, f"tools/whitted_probe.py model ({path})", "", path))
     crop = tuple(args.crop) if args.crop else (0, 0, w, h)
     rows = list(explain(base, course, radiance, images, w, h, crop))
     counts = {k: 0 for k in MECHANISMS}
@@ -175,7 +214,8 @@ def main():
     bar = "|" if args.markdown else ""
     attained = sum(1 for row in rows if row[3].startswith("rounding"))
     bracketed = attained + sum(1 for row in rows if row[3].startswith("bracketed"))
-    hits, brackets = mirror_control(rows, base, course, images, w)
+    hits, brackets = mirror_control(rows, base, course, {
+        k: v for k, v in images.items() if family(k) != "convention"}, w)
     print(f"pixels {pixels}  differ {len(rows)}  unexplained {counts['unexplained']}")
     print(f"control: members attain the course's value at {attained} pixels, the mirror value at "
           f"{hits}; attain or bracket the course's at {bracketed}, the mirror value at {brackets}")
