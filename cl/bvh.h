@@ -104,36 +104,26 @@ RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE 
 RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, real tmax,
                             int any_hit, RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
   LaneReal tnear;
-  int mask = LaneBits(IntersectChildBoxes(node, r, tmax, &tnear));
-  if (mask == 0) return RT_BVH_POP;
-  RT_GLOBAL const int* lane_child = (RT_GLOBAL const int*)&node->child;
-  int first = LowestLane(mask);
-  mask &= mask - 1;
-  if (mask == 0) return lane_child[first];
+  LaneInt hits = IntersectChildBoxes(node, r, tmax, &tnear);
+  int lane_hit[RT_BVH_WIDTH], lane_child[RT_BVH_WIDTH];
+  LaneStoreI(hits, lane_hit);
+  LaneStoreI(node->child, lane_child);
   if (any_hit) {
-    // Lanes after the first are pushed last first, so they pop in lane order.
-    for (; mask != 0; mask &= ~(1 << HighestLane(mask)))
-      stack[(*sp)++] = lane_child[HighestLane(mask)];
-    return lane_child[first];
+    int next = RT_BVH_POP;
+    for (int i = RT_BVH_WIDTH - 1; i >= 0; --i) {
+      if (lane_hit[i] == 0) continue;
+      if (next != RT_BVH_POP) stack[(*sp)++] = next;
+      next = lane_child[i];
+    }
+    return next;
   }
   real lane_t[RT_BVH_WIDTH];
   LaneStoreR(tnear, lane_t);
-  int second = LowestLane(mask);
-  mask &= mask - 1;
-  if (mask == 0) {
-    // The insertion sort below puts the second lane first only when strictly nearer.
-    int near = lane_t[first] > lane_t[second] ? second : first;
-    stack[(*sp)++] = lane_child[first + second - near];
-    return lane_child[near];
-  }
-  // Three or more: insertion sort of the hit lanes by distance, stable in lane order.
   real sorted_t[RT_BVH_WIDTH];
   int sorted_child[RT_BVH_WIDTH];
-  sorted_t[0] = lane_t[first];
-  sorted_child[0] = lane_child[first];
-  int n = 1;
-  for (mask |= 1 << second; mask != 0; mask &= mask - 1) {
-    int i = LowestLane(mask);
+  int n = 0;
+  for (int i = 0; i < RT_BVH_WIDTH; ++i) {
+    if (lane_hit[i] == 0) continue;
     int j = n++;
     for (; j > 0 && sorted_t[j - 1] > lane_t[i]; --j) {
       sorted_t[j] = sorted_t[j - 1];
@@ -142,6 +132,7 @@ RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const Node
     sorted_t[j] = lane_t[i];
     sorted_child[j] = lane_child[i];
   }
+  if (n == 0) return RT_BVH_POP;
   for (int k = n - 1; k > 0; --k) stack[(*sp)++] = sorted_child[k];
   return sorted_child[0];
 }

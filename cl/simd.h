@@ -49,9 +49,8 @@ RT_DEVICE int LaneBits(int8 m) {
   return (h.s0 | h.s1) | (h.s2 | h.s3);
 }
 #endif
-// The lowest and the highest lane whose bit is set in a non-zero LaneBits value.
+// The lowest lane whose bit is set in a non-zero LaneBits value.
 RT_DEVICE int LowestLane(int bits) { return 31 - clz(bits & -bits); }
-RT_DEVICE int HighestLane(int bits) { return 31 - clz(bits); }
 
 #else  // C++17
 
@@ -97,7 +96,6 @@ inline int LaneBits(LaneInt m) {
 #endif
 }
 inline int LowestLane(int bits) { return __builtin_ctz(static_cast<unsigned>(bits)); }
-inline int HighestLane(int bits) { return 31 - __builtin_clz(static_cast<unsigned>(bits)); }
 
 #endif
 

@@ -80,30 +80,34 @@ TEST(TranslationInstance, KeptDirectionsAreExactlyTheTransformedOnes) {
   EXPECT_TRUE(IdentityKeepsDirection(ReciprocalDirection(make_float3(0.0f, 0.0f, -1.0f))));
 }
 
-struct Soup {
+struct Mesh {
   std::vector<Vec3d> positions;
   std::vector<std::array<int, 3>> triangles;
 };
 
-Soup RandomSoup(int count, std::mt19937& rng) {
-  Soup s;
-  std::uniform_real_distribution<double> u(-1, 1), size(0.05, 0.4);
-  std::normal_distribution<double> g;
-  for (int i = 0; i < count; ++i) {
-    Vec3d c{u(rng), u(rng), u(rng)};
-    double r = size(rng);
-    for (int k = 0; k < 3; ++k)
-      s.positions.push_back(RoundToFloat(c + Vec3d{g(rng), g(rng), g(rng)} * r));
-    s.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
-  }
-  // A square in the plane z = 0 through the origin, whose edges and corners lie on the axes
-  // that rays with zero components run along.
-  int base = static_cast<int>(s.positions.size());
+// A bumpy grid of n x n quads over [-1, 1]^2, tilted so rays meet it from every side, and a
+// square in the plane z = 0 through the origin, whose edges and corners lie on the axes that
+// rays with zero components run along.
+Mesh BumpyGridAndSquare(int n, std::mt19937& rng) {
+  Mesh m;
+  std::uniform_real_distribution<double> bump(-0.3, 0.3);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      double x = 2.0 * i / n - 1, y = 2.0 * j / n - 1;
+      m.positions.push_back(RoundToFloat({x, y, 0.5 * x + bump(rng)}));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      m.triangles.push_back({a, b, d});
+      m.triangles.push_back({a, d, c});
+    }
+  int base = static_cast<int>(m.positions.size());
   for (Vec3d p : {Vec3d{0, 0, 0}, Vec3d{1, 0, 0}, Vec3d{1, 1, 0}, Vec3d{0, 1, 0}})
-    s.positions.push_back(p);
-  s.triangles.push_back({base, base + 1, base + 2});
-  s.triangles.push_back({base, base + 2, base + 3});
-  return s;
+    m.positions.push_back(p);
+  m.triangles.push_back({base, base + 1, base + 2});
+  m.triangles.push_back({base, base + 2, base + 3});
+  return m;
 }
 
 bool SameHit(bool a_hit, const Hit& a, bool b_hit, const Hit& b) {
@@ -115,9 +119,9 @@ bool SameHit(bool a_hit, const Hit& a, bool b_hit, const Hit& b) {
 
 TEST(TranslationInstance, HitsAreTheGeneralPathsBitForBit) {
   std::mt19937 rng(2025);
-  Soup soup = RandomSoup(300, rng);
+  Mesh grid = BumpyGridAndSquare(12, rng);
   SceneDesc s = BaseScene();
-  int mesh = AddMesh(s, soup.positions, soup.triangles);
+  int mesh = AddMesh(s, grid.positions, grid.triangles);
   // Translations with zero components on some axes (a -0 or +0 translation there), one
   // instance that is not moved at all, and a rotated one, which takes the general path and
   // makes the direction setup change between instances of one ray.
