@@ -28,26 +28,46 @@
 // operations only (broadcasting per node went through memory in the double build).
 typedef struct NodeRay {
   LaneReal ox, oy, oz, ix, iy, iz;
-  int near_x, near_y, near_z, far_x, far_y, far_z;
+  // Byte offsets of the faces into BvhNode.bounds (RT_NODE_BOUND): unsigned, so the address
+  // is the node's plus the offset, without a sign extension or a scaling shift.
+  uint near_x, near_y, near_z, far_x, far_y, far_z;
 } NodeRay;
 
-RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
+// The bound lanes at byte offset `offset` of a node's bounds.
+#define RT_NODE_BOUND(node, offset) \
+  LaneToReal(*(RT_GLOBAL const LaneFloat*)((RT_GLOBAL const char*)(node)->bounds + (offset)))
+
+// Sets the origin alone, keeping what depends on the direction (see SetTriangleRayOrigin).
+RT_DEVICE void SetNodeRayOrigin(RT_PRIVATE NodeRay* r, real3 o) {
+  r->ox = LaneSplat(o.x);
+  r->oy = LaneSplat(o.y);
+  r->oz = LaneSplat(o.z);
+}
+
+// The node ray of origin o and reciprocal direction inv_d.
+RT_DEVICE NodeRay MakeNodeRayInv(real3 o, real3 inv_d) {
   NodeRay r;
-  // A zero component gives +-inf, which the node test handles; -0 keeps its sign.
-  real3 inv_d = make_real3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
-  r.ox = LaneSplat(o.x);
-  r.oy = LaneSplat(o.y);
-  r.oz = LaneSplat(o.z);
+  SetNodeRayOrigin(&r, o);
   r.ix = LaneSplat(inv_d.x);
   r.iy = LaneSplat(inv_d.y);
   r.iz = LaneSplat(inv_d.z);
-  r.near_x = inv_d.x < 0.0f ? 3 : 0;
-  r.near_y = inv_d.y < 0.0f ? 4 : 1;
-  r.near_z = inv_d.z < 0.0f ? 5 : 2;
-  r.far_x = 3 - r.near_x;
-  r.far_y = 5 - r.near_y;
-  r.far_z = 7 - r.near_z;
+  const uint bound = (uint)sizeof(LaneFloat);
+  r.near_x = (inv_d.x < 0.0f ? 3 : 0) * bound;
+  r.near_y = (inv_d.y < 0.0f ? 4 : 1) * bound;
+  r.near_z = (inv_d.z < 0.0f ? 5 : 2) * bound;
+  r.far_x = 3 * bound - r.near_x;
+  r.far_y = 5 * bound - r.near_y;
+  r.far_z = 7 * bound - r.near_z;
   return r;
+}
+
+// A zero component gives +-inf, which the node test handles; -0 keeps its sign.
+RT_DEVICE real3 ReciprocalDirection(real3 d) {
+  return make_real3(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+}
+
+RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
+  return MakeNodeRayInv(o, ReciprocalDirection(d));
 }
 
 // Slab test of every child box of a node at once; lane i of *tnear gets the entry distance
@@ -56,12 +76,12 @@ RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
 // culls a box the ray actually touches.
 RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r,
                                       real tmax, RT_PRIVATE LaneReal* tnear) {
-  LaneReal nx = (LaneToReal(node->bounds[r->near_x]) - r->ox) * r->ix;
-  LaneReal ny = (LaneToReal(node->bounds[r->near_y]) - r->oy) * r->iy;
-  LaneReal nz = (LaneToReal(node->bounds[r->near_z]) - r->oz) * r->iz;
-  LaneReal fx = (LaneToReal(node->bounds[r->far_x]) - r->ox) * r->ix;
-  LaneReal fy = (LaneToReal(node->bounds[r->far_y]) - r->oy) * r->iy;
-  LaneReal fz = (LaneToReal(node->bounds[r->far_z]) - r->oz) * r->iz;
+  LaneReal nx = (RT_NODE_BOUND(node, r->near_x) - r->ox) * r->ix;
+  LaneReal ny = (RT_NODE_BOUND(node, r->near_y) - r->oy) * r->iy;
+  LaneReal nz = (RT_NODE_BOUND(node, r->near_z) - r->oz) * r->iz;
+  LaneReal fx = (RT_NODE_BOUND(node, r->far_x) - r->ox) * r->ix;
+  LaneReal fy = (RT_NODE_BOUND(node, r->far_y) - r->oy) * r->iy;
+  LaneReal fz = (RT_NODE_BOUND(node, r->far_z) - r->oz) * r->iz;
   // A ray in the plane of a face (zero direction component, origin on the face) gives
   // 0 * inf = NaN there. It stays inside that slab for every t, so the slab must constrain
   // nothing, and it does not: the other face gives -inf as an entry or +inf as an exit,
@@ -79,7 +99,8 @@ RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE 
 // the others farthest first so they pop nearest first. Equal distances keep lane order,
 // the same on both devices. A shadow ray (any_hit) asks only whether something lies before
 // tmax, which no order changes, so its children are not sorted: the first lane hit is
-// visited next and the others pushed.
+// visited next and the others pushed. Most nodes have one or two children hit, which are
+// ordered without the general sort.
 RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r, real tmax,
                             int any_hit, RT_PRIVATE int* stack, RT_PRIVATE int* sp) {
   LaneReal tnear;
@@ -116,6 +137,27 @@ RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const Node
   return sorted_child[0];
 }
 
+// What a transform whose linear part is exactly the identity (RT_INSTANCE_TRANSLATION)
+// makes of a point before adding its translation: TransformPoint's RowDot with rows of 1
+// and +0, the same operations in the same order (1 * x is x exactly), so adding an
+// instance's translation to it gives TransformPoint's result bit for bit.
+RT_DEVICE real3 IdentityLinearPart(real3 p) {
+  return make_real3((p.x + 0.0f * p.y) + 0.0f * p.z, (0.0f * p.x + p.y) + 0.0f * p.z,
+                    (0.0f * p.x + 0.0f * p.y) + p.z);
+}
+
+// 1 when such a linear part leaves the direction whose reciprocal is inv_d exactly as it
+// is: each row computes (1 * x + 0 * y) + 0 * z, where 0 * y is a zero of y's sign (y
+// finite) and x plus a zero is x unless x is itself a zero, when +0 plus either zero is +0.
+// So every component must be finite (inv_d not +-0 or NaN) and not -0 (inv_d not -inf);
+// a tiny negative component whose reciprocal overflows is refused too, which only costs a
+// node ray of its own.
+RT_DEVICE int IdentityKeepsDirection(real3 inv_d) {
+  // Evaluated whole (& rather than &&): six compares without branches.
+  return (inv_d.x > -RT_INFINITY) & (inv_d.x != 0.0f) & (inv_d.y > -RT_INFINITY) &
+         (inv_d.y != 0.0f) & (inv_d.z > -RT_INFINITY) & (inv_d.z != 0.0f);
+}
+
 // World-space origin of an instance's ray at the ray's time.
 RT_DEVICE real3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
   real3 o = ray.origin;
@@ -131,34 +173,54 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   int sp = 0;
   int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
   int instance = -1;                // The instance whose BVH we are in, or -1 at the top level.
-  // The world's node ray is set up once; an instance's ray replaces it while the traversal
-  // is inside the instance (unless the instance neither moves nor is transformed: its ray
-  // is the world's), and the pointer switches back on return. Triangles lie only inside
-  // instances, so only an instance's triangle ray is ever made.
-  NodeRay world_nr = MakeNodeRay(ray.origin, ray.direction), object_nr;
+  // The world's node ray is set up once. An instance that sees the world's direction (one
+  // that is not transformed, or is translated while the ray keeps its direction through a
+  // translation) moves only its origin into object space, restored on return; any other
+  // instance makes its own node ray, and the pointer switches back on return. Triangles lie
+  // only inside instances, so only an instance's triangle ray is ever made; while
+  // instances see the world's direction, its direction-dependent part is made once.
+  real3 inv_d = ReciprocalDirection(ray.direction);
+  NodeRay world_nr = MakeNodeRayInv(ray.origin, inv_d), object_nr;
   TriangleRay object_tr;
+  int tr_has_world_direction = 0;
+  // Whether a translation keeps the ray's direction (IdentityKeepsDirection), and the
+  // ray's origin through the identity, to which each translation is added.
+  int translation_keeps_direction = 0;
+  real3 identity_origin = ray.origin;
+  if (RT_HAS(sd, RT_FEATURE_TRANSFORMS)) {
+    translation_keeps_direction = IdentityKeepsDirection(inv_d);
+    identity_origin = IdentityLinearPart(ray.origin);
+  }
   RT_PRIVATE const NodeRay* nr = &world_nr;
   real tmax = ray.tmax;
   hit->instance = -1;
   hit->t = tmax;
   if (ref < 0) return 0;
   for (;;) {
-    int next = RT_BVH_POP;
     if (ref >= 0) {
-      next = VisitChildren(&sd->nodes[ref], nr, tmax, any_hit, stack, &sp);
+      ref = VisitChildren(&sd->nodes[ref], nr, tmax, any_hit, stack, &sp);
+      if (ref != RT_BVH_POP) continue;
     } else if (instance < 0) {
       // A top-level leaf: exactly one instance.
       int ii = RtLeafFirst(ref);
       RT_GLOBAL const Instance* inst = &sd->instances[ii];
-      real3 io = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) ? InstanceRayOrigin(inst, ray) : ray.origin;
-      real3 id = ray.direction;
-      int moved = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0;
-      if (RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (inst->flags & RT_INSTANCE_TRANSFORMED) != 0) {
-        io = TransformPoint(inst->world_to_object, io);
-        id = TransformVector(inst->world_to_object, id);
-        moved = 1;
+      int flags = inst->flags;
+      int moving = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (flags & RT_INSTANCE_MOVING) != 0;
+      int transformed = RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (flags & RT_INSTANCE_TRANSFORMED) != 0;
+      int translated = transformed && (flags & RT_INSTANCE_TRANSLATION) != 0;
+      real3 io = ray.origin;
+      if (translated && !moving) {
+        RT_GLOBAL const float4* m = inst->world_to_object;
+        io = make_real3(identity_origin.x + m[0].w, identity_origin.y + m[1].w,
+                        identity_origin.z + m[2].w);
+      } else {
+        if (moving) io = InstanceRayOrigin(inst, ray);
+        if (transformed) io = TransformPoint(inst->world_to_object, io);
       }
+      int world_direction = !transformed || (translated && translation_keeps_direction);
       if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {
+        real3 id =
+            transformed ? TransformVector(inst->world_to_object, ray.direction) : ray.direction;
         real t;
         if (IntersectUnitSphere(io, id, tmax, &t)) {
           tmax = t;
@@ -169,13 +231,24 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
         }
       } else if (RT_HAS(sd, RT_FEATURE_TRIANGLES)) {
         instance = ii;
-        if (moved) {
+        if (world_direction) {
+          if (moving || transformed) SetNodeRayOrigin(&world_nr, io);
+          if (tr_has_world_direction) {
+            SetTriangleRayOrigin(&object_tr, io);
+          } else {
+            object_tr = MakeTriangleRay(io, ray.direction);
+            tr_has_world_direction = 1;
+          }
+        } else {
+          real3 id = TransformVector(inst->world_to_object, ray.direction);
           object_nr = MakeNodeRay(io, id);
           nr = &object_nr;
+          object_tr = MakeTriangleRay(io, id);
+          tr_has_world_direction = 0;
         }
-        object_tr = MakeTriangleRay(io, id);
         stack[sp++] = RT_STACK_RETURN_TO_WORLD;
-        next = inst->blas_root;
+        ref = inst->blas_root;
+        continue;
       }
     } else {
       // A bottom-level leaf: its triangles in blocks, tested a block at a time in order.
@@ -194,16 +267,18 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
         }
       }
     }
-    while (next == RT_BVH_POP) {
+    // The next node to visit, back in world space past an instance's sentinel.
+    for (;;) {
       if (sp == 0) return hit->instance >= 0;
-      next = stack[--sp];
-      if (next == RT_STACK_RETURN_TO_WORLD) {
-        instance = -1;
+      ref = stack[--sp];
+      if (ref != RT_STACK_RETURN_TO_WORLD) break;
+      instance = -1;
+      if (nr == &world_nr) {
+        SetNodeRayOrigin(&world_nr, ray.origin);
+      } else {
         nr = &world_nr;
-        next = RT_BVH_POP;
       }
     }
-    ref = next;
   }
 }
 

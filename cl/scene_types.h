@@ -95,6 +95,10 @@ typedef struct Camera {
 #define RT_INSTANCE_TRANSFORMED 1
 #define RT_INSTANCE_SMOOTH 2
 #define RT_INSTANCE_MOVING 4
+// Set with RT_INSTANCE_TRANSFORMED when world_to_object's linear part is exactly the
+// identity (1.0f on the diagonal, +0.0f elsewhere): the transform moves origins only, and
+// every such instance turns a direction into the same vector (cl/bvh.h shares its setup).
+#define RT_INSTANCE_TRANSLATION 8
 
 // One object of the top level: a mesh's bottom-level BVH or the unit sphere, seen
 // through an affine transform and moving by time * motion over the shutter.

@@ -17,9 +17,29 @@ typedef struct TriangleRay {
   Quad origin_quad;  // The origin and (kx, ky, kz) as vector lanes for TrianglePoint.
   QuadIndex axes;
 #endif
-  // The permuted origin and the shear broadcast to every lane, for IntersectTriangleBlock.
+  // The permuted origin and the shear broadcast to every lane, for IntersectTriangleBlock,
+  // and kx, ky, kz as byte offsets into a block's vertex lanes (RT_BLOCK_LANES).
   LaneReal lane_ox, lane_oy, lane_oz, lane_sx, lane_sy, lane_sz;
+  uint off_x, off_y, off_z;
 } TriangleRay;
+
+// Axis a of vertex k of a block's triangles (TriangleBlock.v[3 * k + a]), `offset` being
+// a's byte offset (TriangleRay.off_x and the others).
+#define RT_BLOCK_LANES(block, k, offset) \
+  LaneToReal(                            \
+      *(RT_GLOBAL const LaneFloat*)((RT_GLOBAL const char*)((block)->v + 3 * (k)) + (offset)))
+
+// Sets the origin alone: what depends on the direction (the axes and the shear) is kept, so
+// rays that share a direction and differ in origin share those divisions.
+RT_DEVICE void SetTriangleRayOrigin(RT_PRIVATE TriangleRay* tr, real3 origin) {
+  tr->origin = origin;
+#ifndef RT_REAL_DOUBLE
+  tr->origin_quad = QuadFrom3(origin);
+#endif
+  tr->lane_ox = LaneSplat(Component(origin, tr->kx));
+  tr->lane_oy = LaneSplat(Component(origin, tr->ky));
+  tr->lane_oz = LaneSplat(Component(origin, tr->kz));
+}
 
 RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
   TriangleRay tr;
@@ -38,15 +58,15 @@ RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
   tr.sy = Component(dir, tr.ky) / dz;
   tr.sz = 1.0f / dz;
 #ifndef RT_REAL_DOUBLE
-  tr.origin_quad = QuadFrom3(origin);
   tr.axes = QuadIndexOf(tr.kx, tr.ky, tr.kz, 3);
 #endif
-  tr.lane_ox = LaneSplat(Component(origin, tr.kx));
-  tr.lane_oy = LaneSplat(Component(origin, tr.ky));
-  tr.lane_oz = LaneSplat(Component(origin, tr.kz));
+  tr.off_x = (uint)tr.kx * (uint)sizeof(LaneFloat);
+  tr.off_y = (uint)tr.ky * (uint)sizeof(LaneFloat);
+  tr.off_z = (uint)tr.kz * (uint)sizeof(LaneFloat);
   tr.lane_sx = LaneSplat(tr.sx);
   tr.lane_sy = LaneSplat(tr.sy);
   tr.lane_sz = LaneSplat(tr.sz);
+  SetTriangleRayOrigin(&tr, origin);
   return tr;
 }
 
@@ -105,16 +125,15 @@ RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
                                      RT_PRIVATE const TriangleRay* tr, real tmax, int cull,
                                      int any_hit, RT_PRIVATE real* t, RT_PRIVATE real* b1,
                                      RT_PRIVATE real* b2) {
-  RT_GLOBAL const LaneFloat* v = block->v;
-  LaneReal az = LaneToReal(v[tr->kz]) - tr->lane_oz;
-  LaneReal bz = LaneToReal(v[3 + tr->kz]) - tr->lane_oz;
-  LaneReal cz = LaneToReal(v[6 + tr->kz]) - tr->lane_oz;
-  LaneReal ax = (LaneToReal(v[tr->kx]) - tr->lane_ox) - tr->lane_sx * az;
-  LaneReal ay = (LaneToReal(v[tr->ky]) - tr->lane_oy) - tr->lane_sy * az;
-  LaneReal bx = (LaneToReal(v[3 + tr->kx]) - tr->lane_ox) - tr->lane_sx * bz;
-  LaneReal by = (LaneToReal(v[3 + tr->ky]) - tr->lane_oy) - tr->lane_sy * bz;
-  LaneReal cx = (LaneToReal(v[6 + tr->kx]) - tr->lane_ox) - tr->lane_sx * cz;
-  LaneReal cy = (LaneToReal(v[6 + tr->ky]) - tr->lane_oy) - tr->lane_sy * cz;
+  LaneReal az = RT_BLOCK_LANES(block, 0, tr->off_z) - tr->lane_oz;
+  LaneReal bz = RT_BLOCK_LANES(block, 1, tr->off_z) - tr->lane_oz;
+  LaneReal cz = RT_BLOCK_LANES(block, 2, tr->off_z) - tr->lane_oz;
+  LaneReal ax = (RT_BLOCK_LANES(block, 0, tr->off_x) - tr->lane_ox) - tr->lane_sx * az;
+  LaneReal ay = (RT_BLOCK_LANES(block, 0, tr->off_y) - tr->lane_oy) - tr->lane_sy * az;
+  LaneReal bx = (RT_BLOCK_LANES(block, 1, tr->off_x) - tr->lane_ox) - tr->lane_sx * bz;
+  LaneReal by = (RT_BLOCK_LANES(block, 1, tr->off_y) - tr->lane_oy) - tr->lane_sy * bz;
+  LaneReal cx = (RT_BLOCK_LANES(block, 2, tr->off_x) - tr->lane_ox) - tr->lane_sx * cz;
+  LaneReal cy = (RT_BLOCK_LANES(block, 2, tr->off_y) - tr->lane_oy) - tr->lane_sy * cz;
   LaneReal u = cx * by - cy * bx;
   LaneReal vv = ax * cy - ay * cx;
   LaneReal w = bx * ay - by * ax;
@@ -131,24 +150,26 @@ RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
   LaneReal inv_det = LaneSplat(1.0f) / det;
   LaneReal lane_t = tscaled * inv_det;
   LaneRealMask found = ~miss & (lane_t > zero) & (lane_t < LaneSplat(tmax));
-  if (!LaneAny(found)) return -1;
-  real ts[RT_BVH_WIDTH], dets[RT_BVH_WIDTH], tss[RT_BVH_WIDTH];
-  int hits[RT_BVH_WIDTH];
+  int hits = LaneBits(LaneMaskToInt(found));
+  if (hits == 0) return -1;
+  real ts[RT_BVH_WIDTH];
   LaneStoreR(lane_t, ts);
-  LaneStoreR(det, dets);
-  LaneStoreR(tscaled, tss);
-  LaneStoreI(LaneMaskToInt(found), hits);
-  int best = -1;
-  for (int i = 0; i < RT_BVH_WIDTH; ++i) {
-    if (hits[i] == 0) continue;
-    if (best >= 0) {  // tmax has narrowed: the scalar test's checks that depend on it.
+  int best = LowestLane(hits);
+  hits &= hits - 1;
+  if (hits != 0 && !any_hit) {
+    real dets[RT_BVH_WIDTH], tss[RT_BVH_WIDTH];
+    LaneStoreR(det, dets);
+    LaneStoreR(tscaled, tss);
+    tmax = ts[best];
+    for (; hits != 0; hits &= hits - 1) {
+      // tmax has narrowed: the scalar test's checks that depend on it.
+      int i = LowestLane(hits);
       real limit = tmax * dets[i];
       if (dets[i] < 0.0f ? tss[i] < limit : tss[i] > limit) continue;
       if (!(ts[i] < tmax)) continue;
+      best = i;
+      tmax = ts[i];
     }
-    best = i;
-    tmax = ts[i];
-    if (any_hit) break;
   }
   real invs[RT_BVH_WIDTH], vs[RT_BVH_WIDTH], ws[RT_BVH_WIDTH];
   LaneStoreR(inv_det, invs);

@@ -36,10 +36,28 @@ typedef uint4 QuadIndex;
 #define QuadPermute(v, index) shuffle((v), (index))
 #define QuadIndexOf(a, b, c, d) ((uint4)((uint)(a), (uint)(b), (uint)(c), (uint)(d)))
 #define QuadLane(v, i) ((v).s##i)
+// Bit i set where lane i of a comparison's mask (-1 / 0 per lane) is set.
+#if RT_BVH_WIDTH == 4
+RT_DEVICE int LaneBits(int4 m) {
+  int4 b = m & (int4)(1, 2, 4, 8);
+  return (b.s0 | b.s1) | (b.s2 | b.s3);
+}
+#else
+RT_DEVICE int LaneBits(int8 m) {
+  int8 b = m & (int8)(1, 2, 4, 8, 16, 32, 64, 128);
+  int4 h = b.lo | b.hi;
+  return (h.s0 | h.s1) | (h.s2 | h.s3);
+}
+#endif
+// The lowest lane whose bit is set in a non-zero LaneBits value.
+RT_DEVICE int LowestLane(int bits) { return 31 - clz(bits & -bits); }
 
 #else  // C++17
 
 #include <cstring>
+#if defined(__SSE__)
+#include <immintrin.h>
+#endif
 
 typedef float LaneFloat __attribute__((vector_size(4 * RT_BVH_WIDTH)));
 typedef int LaneInt __attribute__((vector_size(4 * RT_BVH_WIDTH)));
@@ -65,6 +83,19 @@ inline Quad QuadPermute(Quad v, QuadIndex index) {
 #endif
 inline QuadIndex QuadIndexOf(int a, int b, int c, int d) { return QuadIndex{a, b, c, d}; }
 #define QuadLane(v, i) ((v)[i])
+
+inline int LaneBits(LaneInt m) {
+#if defined(__AVX__) && RT_BVH_WIDTH == 8
+  return _mm256_movemask_ps(reinterpret_cast<__m256>(m));
+#elif defined(__SSE__) && RT_BVH_WIDTH == 4
+  return _mm_movemask_ps(reinterpret_cast<__m128>(m));
+#else
+  int bits = 0;
+  for (int i = 0; i < RT_BVH_WIDTH; ++i) bits |= (m[i] != 0) << i;
+  return bits;
+#endif
+}
+inline int LowestLane(int bits) { return __builtin_ctz(static_cast<unsigned>(bits)); }
 
 #endif
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -37,6 +38,19 @@ Aabb transformed_box(const Aabb& b, const Mat4& m, Vec3d motion) {
 }
 
 bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+// Whether the rows' linear part is exactly the identity, bit for bit: a -0 off the diagonal
+// would give some directions another sign of zero than +0 gives (RT_INSTANCE_TRANSLATION).
+bool identity_linear_part(const float4 rows[3]) {
+  for (int r = 0; r < 3; ++r) {
+    const float linear[3] = {rows[r].x, rows[r].y, rows[r].z};
+    for (int c = 0; c < 3; ++c) {
+      const float want = r == c ? 1.0f : 0.0f;
+      if (std::memcmp(&linear[c], &want, sizeof want) != 0) return false;
+    }
+  }
+  return true;
+}
 
 bool finite_rows(const float4 rows[3]) {
   for (int r = 0; r < 3; ++r)
@@ -163,9 +177,12 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
     inst.kind = sphere ? RT_INSTANCE_SPHERE : RT_INSTANCE_MESH;
     inst.blas_root = sphere ? -1 : mesh->blas_root;
     inst.material = o.material;
-    inst.flags = (to_frame.is_identity() ? 0 : RT_INSTANCE_TRANSFORMED) |
-                 (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
-                 (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
+    const bool transformed = !to_frame.is_identity();
+    inst.flags =
+        (transformed ? RT_INSTANCE_TRANSFORMED : 0) |
+        (transformed && identity_linear_part(inst.world_to_object) ? RT_INSTANCE_TRANSLATION : 0) |
+        (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
+        (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
     object_of.push_back(static_cast<int>(&o - scene.objects.data()));
     InstanceTextures it;

@@ -54,18 +54,4 @@ RT_DEVICE LaneReal LaneSplat(real x) {
 #endif
 }
 
-// 1 when any lane of a comparison's mask is set.
-RT_DEVICE int LaneAny(LaneRealMask m) {
-#ifdef __OPENCL_C_VERSION__
-  return any(m);
-#else
-  LaneInt i = LaneMaskToInt(m);
-  int lanes[RT_BVH_WIDTH];
-  LaneStoreI(i, lanes);
-  int a = 0;
-  for (int k = 0; k < RT_BVH_WIDTH; ++k) a |= lanes[k];
-  return a != 0;
-#endif
-}
-
 #endif  // RT_UTIL_LANES_H
