@@ -104,19 +104,30 @@ cl::Program ClProgramCache::build(const std::string& source, const std::string& 
     }
   }
   cl::Program p(context_, source);
-  try {
-    p.build(devices, options.c_str());
-  } catch (const cl::Error& e) {
-    std::string log;
+  // PoCL's own kernel cache (~/.cache/pocl) is shared by every process; two processes that
+  // compile the same kernel at once on a cold cache can race on its temporary files, and
+  // the loser's build fails with "unable to rename temporary". That failure is transient,
+  // so such a build is tried once more before it counts as an error.
+  for (int attempt = 0;; ++attempt) {
     try {
-      log = p.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
-    } catch (const cl::Error&) {
-      log = "(no build log available)";
+      p.build(devices, options.c_str());
+      break;
+    } catch (const cl::Error& e) {
+      std::string log;
+      try {
+        log = p.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
+      } catch (const cl::Error&) {
+        log = "(no build log available)";
+      }
+      if (attempt == 0 && log.find("unable to rename temporary") != std::string::npos) {
+        p = cl::Program(context_, source);
+        continue;
+      }
+      std::fprintf(stderr, "OpenCL build log for %s (options: %s):\n%s\n", name_.c_str(),
+                   options.c_str(), clean_cl_string(log).c_str());
+      std::fprintf(stderr, "OpenCL build error: %s\n", describe_cl_error(e).c_str());
+      throw std::runtime_error("OpenCL: kernel build failed on " + name_ + " (see the log above)");
     }
-    std::fprintf(stderr, "OpenCL build log for %s (options: %s):\n%s\n", name_.c_str(),
-                 options.c_str(), clean_cl_string(log).c_str());
-    std::fprintf(stderr, "OpenCL build error: %s\n", describe_cl_error(e).c_str());
-    throw std::runtime_error("OpenCL: kernel build failed on " + name_ + " (see the log above)");
   }
   if (!file.empty()) {
     // The cache is an optimisation only: any failure to store the binary is ignored.
