@@ -5,12 +5,11 @@
 #include <thread>
 
 #include "device/cpu_kernel.h"
+#include "util/parallel_for.h"
 
 namespace rt {
 
-CpuDevice::CpuDevice(int threads)
-    : threads_(threads > 0 ? threads
-                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
+CpuDevice::CpuDevice(int threads) : threads_(resolve_threads(threads)) {}
 
 // The film lives in host memory, beside the caller's outputs; the scene arrays are
 // already allocated.
