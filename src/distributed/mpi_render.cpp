@@ -16,6 +16,7 @@
 #include "distributed/mpi_link.h"
 #include "distributed/tile_worker.h"
 #include "render_job.h"
+#include "util/parallel_for.h"
 
 namespace rt {
 namespace {
@@ -39,8 +40,8 @@ NodePlace node_place(const CliOptions& opt) {
   MPI_Comm_rank(node, &p.local_rank);
   MPI_Comm_size(node, &p.local_ranks);
   MPI_Comm_free(&node);
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  p.threads = opt.threads > 0 ? opt.threads : std::max(1, cores / p.local_ranks);
+  // --threads as given, else the node's cores shared among the node's ranks.
+  p.threads = opt.threads > 0 ? opt.threads : std::max(1, resolve_threads(0) / p.local_ranks);
   // PoCL's CPU device would start a thread per core in every rank; it reads this at start.
   if (p.local_ranks > 1 && !std::getenv("POCL_MAX_PTHREAD_COUNT"))
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(p.threads).c_str(), 1);
