@@ -183,9 +183,6 @@ OptionTable<CliOptions> make_raytracer_table() {
               std::vector<std::pair<std::string, bool>>{{"generic", true}, {"specialized", false}},
               RT_FIELD(generic_kernel),
               "compile the all-features kernel, or one specialized to the scene's features");
-  t.add_env("RT_MPI_FAULT",
-            "a test hook under mpirun: <rank>:kill or <rank>:fail makes that rank (not 0) die "
-            "by SIGKILL or fail at its second task");
   t.add_env("RT_CL_OPTIONS",
             "extra OpenCL build options appended to the kernel's (a developer's knob, e.g. "
             "-cl-opt-disable); part of the kernel cache key");

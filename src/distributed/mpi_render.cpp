@@ -48,14 +48,20 @@ NodePlace node_place(const CliOptions& opt) {
   return p;
 }
 
-// A test hook: RT_MPI_FAULT=<rank>:kill makes that rank (not 0) die by SIGKILL when its
-// second task arrives; <rank>:fail makes its second task throw.
+#ifdef RT_MPI_FAULT_INJECTION
+// Fault injection, compiled only into the test executable raytracer_mpi_faults
+// (tests/CMakeLists.txt), never into raytracer: RT_MPI_FAULT=<rank>:kill makes that rank
+// (not 0) die by SIGKILL when its second task arrives; <rank>:fail makes its second task
+// throw.
 bool fault_due(int rank, int tasks_received, const char* kind) {
   const char* f = std::getenv("RT_MPI_FAULT");
   if (!f || tasks_received != 2) return false;
   const std::string spec = f;
   return spec == std::to_string(rank) + ":" + kind;
 }
+#else
+constexpr bool fault_due(int, int, const char*) { return false; }
+#endif
 
 // Ranks above 0: ask, render, send the band back, until told to stop or a task fails.
 void serve(const CliOptions& opt, const NodePlace& place) {
