@@ -163,8 +163,9 @@ OptionTable<CliOptions> make_raytracer_table() {
       .default_is("automatic");
   t.section("Stopping")
       .real("--time-limit", "S", Range::positive(), RT_FIELD(render.stop.time_limit_s),
-            "stop sampling when the next pass would end after S seconds (every pixel keeps "
-            "the same sample count; at least one pass)")
+            "stop sampling an image when its next pass would end more than S seconds of wall "
+            "time after its first sample (each image its own S; loading, BVH build and kernel "
+            "compile not counted; every pixel keeps the same sample count; at least one pass)")
       .default_is("none")
       .real("--noise-target", "E", Range::positive(), RT_FIELD(render.stop.noise_target),
             "stop sampling once the image's estimated relative error (root mean of var(pixel "
