@@ -166,9 +166,15 @@ RT_DEVICE real3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
 }
 
 // Finds the closest hit (any_hit = 0) or any hit at all (any_hit = 1, for shadow rays)
-// with t < ray.tmax. Returns 1 on a hit and fills *hit.
-RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hit, int cull,
-                             RT_PRIVATE Hit* hit) {
+// with t < ray->tmax. Returns 1 on a hit and fills *hit.
+// The ray comes by pointer and is read a component at a time: passed by value, the caller
+// copied it into the call's stack area in 16-byte pieces right after writing its
+// components one by one, and each such copy stalled on store-to-load forwarding (the
+// shadow ray's copy was a quarter of AddLightSamples' own time in hw3 spheres_dof).
+RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ray* ray_in,
+                             int any_hit, int cull, RT_PRIVATE Hit* hit) {
+  real3 ray_origin = make_real3(ray_in->origin.x, ray_in->origin.y, ray_in->origin.z);
+  real3 ray_direction = make_real3(ray_in->direction.x, ray_in->direction.y, ray_in->direction.z);
   int stack[RT_BVH_STACK];
   int sp = 0;
   int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
@@ -179,20 +185,20 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
   // instance makes its own node ray, and the pointer switches back on return. Triangles lie
   // only inside instances, so only an instance's triangle ray is ever made; while
   // instances see the world's direction, its direction-dependent part is made once.
-  real3 inv_d = ReciprocalDirection(ray.direction);
-  NodeRay world_nr = MakeNodeRayInv(ray.origin, inv_d), object_nr;
+  real3 inv_d = ReciprocalDirection(ray_direction);
+  NodeRay world_nr = MakeNodeRayInv(ray_origin, inv_d), object_nr;
   TriangleRay object_tr;
   int tr_has_world_direction = 0;
   // Whether a translation keeps the ray's direction (IdentityKeepsDirection), and the
   // ray's origin through the identity, to which each translation is added.
   int translation_keeps_direction = 0;
-  real3 identity_origin = ray.origin;
+  real3 identity_origin = ray_origin;
   if (RT_HAS(sd, RT_FEATURE_TRANSFORMS)) {
     translation_keeps_direction = IdentityKeepsDirection(inv_d);
-    identity_origin = IdentityLinearPart(ray.origin);
+    identity_origin = IdentityLinearPart(ray_origin);
   }
   RT_PRIVATE const NodeRay* nr = &world_nr;
-  real tmax = ray.tmax;
+  real tmax = ray_in->tmax;
   hit->instance = -1;
   hit->t = tmax;
   if (ref < 0) return 0;
@@ -208,19 +214,19 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       int moving = RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (flags & RT_INSTANCE_MOVING) != 0;
       int transformed = RT_HAS(sd, RT_FEATURE_TRANSFORMS) && (flags & RT_INSTANCE_TRANSFORMED) != 0;
       int translated = transformed && (flags & RT_INSTANCE_TRANSLATION) != 0;
-      real3 io = ray.origin;
+      real3 io = ray_origin;
       if (translated && !moving) {
         RT_GLOBAL const float4* m = inst->world_to_object;
         io = make_real3(identity_origin.x + m[0].w, identity_origin.y + m[1].w,
                         identity_origin.z + m[2].w);
       } else {
-        if (moving) io = InstanceRayOrigin(inst, ray);
+        if (moving) io = InstanceRayOrigin(inst, *ray_in);
         if (transformed) io = TransformPoint(inst->world_to_object, io);
       }
       int world_direction = !transformed || (translated && translation_keeps_direction);
       if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {
         real3 id =
-            transformed ? TransformVector(inst->world_to_object, ray.direction) : ray.direction;
+            transformed ? TransformVector(inst->world_to_object, ray_direction) : ray_direction;
         real t;
         if (IntersectUnitSphere(io, id, tmax, &t)) {
           tmax = t;
@@ -236,11 +242,11 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
           if (tr_has_world_direction) {
             SetTriangleRayOrigin(&object_tr, io);
           } else {
-            object_tr = MakeTriangleRay(io, ray.direction);
+            object_tr = MakeTriangleRay(io, ray_direction);
             tr_has_world_direction = 1;
           }
         } else {
-          real3 id = TransformVector(inst->world_to_object, ray.direction);
+          real3 id = TransformVector(inst->world_to_object, ray_direction);
           object_nr = MakeNodeRay(io, id);
           nr = &object_nr;
           object_tr = MakeTriangleRay(io, id);
@@ -274,7 +280,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, Ray ray, int any_hi
       if (ref != RT_STACK_RETURN_TO_WORLD) break;
       instance = -1;
       if (nr == &world_nr) {
-        SetNodeRayOrigin(&world_nr, ray.origin);
+        SetNodeRayOrigin(&world_nr, ray_origin);
       } else {
         nr = &world_nr;
       }

@@ -5,17 +5,19 @@
 
 #include "bvh.h"
 
+// Both are inlined, so the traversal reads the caller's own ray (IntersectScene).
+
 // The closest hit with t < ray.tmax into *hit; 0 when the ray escapes. `cull` skips
 // triangles facing away from the ray.
-RT_DEVICE int IntersectClosest(RT_PRIVATE const SceneData* sd, Ray ray, int cull,
-                               RT_PRIVATE Hit* hit) {
-  return IntersectScene(sd, ray, 0, cull, hit);
+RT_DEVICE_INLINE int IntersectClosest(RT_PRIVATE const SceneData* sd, Ray ray, int cull,
+                                      RT_PRIVATE Hit* hit) {
+  return IntersectScene(sd, &ray, 0, cull, hit);
 }
 
 // 1 when anything lies on the ray with t < ray.tmax; stops at the first hit found.
-RT_DEVICE int IntersectOccluded(RT_PRIVATE const SceneData* sd, Ray ray) {
+RT_DEVICE_INLINE int IntersectOccluded(RT_PRIVATE const SceneData* sd, Ray ray) {
   Hit hit;
-  return IntersectScene(sd, ray, 1, 0, &hit);
+  return IntersectScene(sd, &ray, 1, 0, &hit);
 }
 
 #endif  // RT_INTERSECT_H

@@ -48,7 +48,7 @@ TEST(HitPoint, RayModeIsOriginPlusTTimesDirectionAndChangesOnlyThePoint) {
     Ray ray =
         MakeRay(make_float3(0, 0, 0), Normalize(make_float3(u(rng), u(rng), -1.0f)), 1e30f, 0);
     Hit hit{};
-    if (!IntersectScene(&sd_surface, ray, 0, 0, &hit)) continue;
+    if (!IntersectScene(&sd_surface, &ray, 0, 0, &hit)) continue;
     ++hits;
     SurfacePoint a = ComputeSurface(&sd_surface, ray, hit);
     SurfacePoint b = ComputeSurface(&sd_ray, ray, hit);

@@ -87,7 +87,7 @@ TEST(GeometryTransform, EllipsoidNormalsThroughScenePath) {
       Vec3d aim = c.centre + c.rotation.vector({1.9 * u(rng), 0.9 * u(rng), 0.9 * u(rng)});
       Ray ray = MakeRay(F3(o), F3(aim - o), kInf, 0);
       Hit hit{};  // A sphere hit leaves b1 and b2 unset.
-      if (!IntersectScene(&sd, ray, 0, 0, &hit)) continue;
+      if (!IntersectScene(&sd, &ray, 0, 0, &hit)) continue;
       ++hits;
       SurfacePoint sp = ComputeSurface(&sd, ray, hit);
       Vec3d x = unrotate.vector(D3(sp.p) - c.centre);  // In the ellipsoid's frame.

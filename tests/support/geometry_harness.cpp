@@ -77,7 +77,8 @@ FlatScene Flatten(const SceneDesc& s, int bins, int max_leaf) {
 
 bool Trace(const FlatScene& f, float3 o, float3 d, float tmax, int cull, Hit* hit, int any_hit) {
   SceneData sd = f.view();
-  return IntersectScene(&sd, MakeRay(o, d, tmax, 0.0f), any_hit, cull, hit) != 0;
+  Ray ray = MakeRay(o, d, tmax, 0.0f);
+  return IntersectScene(&sd, &ray, any_hit, cull, hit) != 0;
 }
 
 TriHit HitTriangle(float3 o, float3 d, float3 p0, float3 p1, float3 p2, float tmax, int cull) {
