@@ -163,8 +163,9 @@ OptionTable<CliOptions> make_raytracer_table() {
       .default_is("automatic");
   t.section("Stopping")
       .real("--time-limit", "S", Range::positive(), RT_FIELD(render.stop.time_limit_s),
-            "stop sampling when the next pass would end after S seconds (every pixel keeps "
-            "the same sample count; at least one pass)")
+            "stop sampling an image when its next pass would end more than S seconds of wall "
+            "time after its first sample (each image its own S; loading, BVH build and kernel "
+            "compile not counted; every pixel keeps the same sample count; at least one pass)")
       .default_is("none")
       .real("--noise-target", "E", Range::positive(), RT_FIELD(render.stop.noise_target),
             "stop sampling once the image's estimated relative error (root mean of var(pixel "
@@ -183,9 +184,6 @@ OptionTable<CliOptions> make_raytracer_table() {
               std::vector<std::pair<std::string, bool>>{{"generic", true}, {"specialized", false}},
               RT_FIELD(generic_kernel),
               "compile the all-features kernel, or one specialized to the scene's features");
-  t.add_env("RT_MPI_FAULT",
-            "a test hook under mpirun: <rank>:kill or <rank>:fail makes that rank (not 0) die "
-            "by SIGKILL or fail at its second task");
   t.add_env("RT_CL_OPTIONS",
             "extra OpenCL build options appended to the kernel's (a developer's knob, e.g. "
             "-cl-opt-disable); part of the kernel cache key");

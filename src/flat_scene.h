@@ -14,7 +14,7 @@ namespace rt {
 // When to stop sampling before the camera's sample count is reached. Renders stop only
 // between passes, so every pixel always has the same number of samples.
 struct StopRule {
-  double time_limit_s = 0;  // Wall-clock budget of the render; 0: none.
+  double time_limit_s = 0;  // Wall-clock budget of one image's sampling; 0: none.
   double noise_target = 0;  // Stop once relative_noise() falls below this; 0: never.
   // > 0: the film is HDR, tone mapped with this key; sets the noise's floor (noise_floor).
   double tonemap_key = 0;

@@ -2,17 +2,21 @@
 # The distributed driver under mpirun (src/distributed/), against the single-process render.
 #
 # usage: mpi_render_test.sh RAYTRACER MPIEXEC SCENES_DIR WORKDIR cpu|cl multicam|large|fault
+#                           [FAULTY_RAYTRACER]
 # multicam: a two-camera scene rendered by 2 and 3 ranks (whole images, then tiles of 32 rows)
 #           gives byte-identical PNGs and moment files.
 # large:    one image cut into tiles (automatic for 3 ranks, 64 rows for 2) is byte-identical.
 # fault:    seven frames; rank 1 killed at its second task ends the job non-zero, naming the
 #           rank, with no partial or temporary file; rank 2 failing ends it with one line
 #           from rank 0; --skip-existing then renders only the missing frames, and every frame
-#           is byte-identical to the single-process one.
+#           is byte-identical to the single-process one. The faults are injected by
+#           FAULTY_RAYTRACER (raytracer_mpi_faults, built with the RT_MPI_FAULT hook); the
+#           raytracer itself ignores RT_MPI_FAULT and renders every frame.
 # Ranks are oversubscribed (the suite runs on 2 cores) and allowed to run as root.
 # Exit status: 0 pass, 1 fail, 77 skipped (no OpenCL device, or the scenes are missing).
 set -uo pipefail
-rt="$1" mpiexec="$2" scenes="$3" work="$4" device="$5" case="$6"
+rt="$1" mpiexec="$2" scenes="$3" work="$4" device="$5" case="$6" faulty="${7:-}"
+exe="$rt"  # the executable run() starts; the fault case swaps in $faulty
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # Loopback only: no network interfaces are probed, so containers need no setup.
 export OMPI_MCA_btl=self,vader
@@ -34,9 +38,9 @@ run() {
   shift 2
   mkdir -p "$dir"
   if [ "$np" = 0 ]; then
-    "$rt" "${scene_args[@]}" --device "$device" --output-dir "$dir" --quiet "$@" 2> "$dir.err"
+    "$exe" "${scene_args[@]}" --device "$device" --output-dir "$dir" --quiet "$@" 2> "$dir.err"
   else
-    "$mpiexec" --oversubscribe --bind-to none -np "$np" "$rt" "${scene_args[@]}" \
+    "$mpiexec" --oversubscribe --bind-to none -np "$np" "$exe" "${scene_args[@]}" \
       --device "$device" --output-dir "$dir" --quiet "$@" 2> "$dir.err"
   fi
 }
@@ -66,6 +70,7 @@ case "$case" in
     flags=(--resolution-scale 0.25 --spp 4 --moments)
     ;;
   fault)
+    [ -x "$faulty" ] || fail "the fault case needs FAULTY_RAYTRACER (raytracer_mpi_faults)"
     scene_args=("$scenes"/hw3/tap_water/xml/tap_0*.xml)
     flags=(--resolution-scale 0.1 --spp 8)
     ;;
@@ -93,8 +98,12 @@ case "$case" in
     same "$work/np2"
     ;;
   fault)
+    # The raytracer itself has no fault hook: the same request renders every frame.
+    RT_MPI_FAULT=1:kill run "$work/unhooked" 2 "${flags[@]}" --tile-rows 32 ||
+      fail "RT_MPI_FAULT reached the raytracer: $(cat "$work/unhooked.err")"
+    same "$work/unhooked"
     # Rank 1 dies at its second task: that frame can never be finished.
-    RT_MPI_FAULT=1:kill run "$work/killed" 2 "${flags[@]}" --tile-rows 32
+    RT_MPI_FAULT=1:kill exe="$faulty" run "$work/killed" 2 "${flags[@]}" --tile-rows 32
     status=$?
     [ "$status" != 0 ] || fail "a killed rank left exit status 0"
     grep -q "rank 1" "$work/killed.err" || fail "the killed rank is not named: $(cat "$work/killed.err")"
@@ -107,7 +116,7 @@ case "$case" in
       fail "the resume did not render exactly the $((7 - written)) missing frames: $(cat "$work/killed.err")"
     same "$work/killed"
     # Rank 2's second task throws: one line from rank 0 names it.
-    RT_MPI_FAULT=2:fail run "$work/failed" 3 "${flags[@]}" --tile-rows 32
+    RT_MPI_FAULT=2:fail exe="$faulty" run "$work/failed" 3 "${flags[@]}" --tile-rows 32
     status=$?
     [ "$status" = 1 ] || fail "a failed rank gave exit status $status, not 1"
     [ "$(grep -c '^raytracer: error: rank 2: injected failure' "$work/failed.err")" = 1 ] ||

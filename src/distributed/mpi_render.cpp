@@ -16,6 +16,7 @@
 #include "distributed/mpi_link.h"
 #include "distributed/tile_worker.h"
 #include "render_job.h"
+#include "util/parallel_for.h"
 
 namespace rt {
 namespace {
@@ -39,22 +40,28 @@ NodePlace node_place(const CliOptions& opt) {
   MPI_Comm_rank(node, &p.local_rank);
   MPI_Comm_size(node, &p.local_ranks);
   MPI_Comm_free(&node);
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  p.threads = opt.threads > 0 ? opt.threads : std::max(1, cores / p.local_ranks);
+  // --threads as given, else the node's cores shared among the node's ranks.
+  p.threads = opt.threads > 0 ? opt.threads : std::max(1, resolve_threads(0) / p.local_ranks);
   // PoCL's CPU device would start a thread per core in every rank; it reads this at start.
   if (p.local_ranks > 1 && !std::getenv("POCL_MAX_PTHREAD_COUNT"))
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(p.threads).c_str(), 1);
   return p;
 }
 
-// A test hook: RT_MPI_FAULT=<rank>:kill makes that rank (not 0) die by SIGKILL when its
-// second task arrives; <rank>:fail makes its second task throw.
+#ifdef RT_MPI_FAULT_INJECTION
+// Fault injection, compiled only into the test executable raytracer_mpi_faults
+// (tests/CMakeLists.txt), never into raytracer: RT_MPI_FAULT=<rank>:kill makes that rank
+// (not 0) die by SIGKILL when its second task arrives; <rank>:fail makes its second task
+// throw.
 bool fault_due(int rank, int tasks_received, const char* kind) {
   const char* f = std::getenv("RT_MPI_FAULT");
   if (!f || tasks_received != 2) return false;
   const std::string spec = f;
   return spec == std::to_string(rank) + ":" + kind;
 }
+#else
+constexpr bool fault_due(int, int, const char*) { return false; }
+#endif
 
 // Ranks above 0: ask, render, send the band back, until told to stop or a task fails.
 void serve(const CliOptions& opt, const NodePlace& place) {
