@@ -35,11 +35,11 @@ namespace {
 struct Args {
   std::string criterion = "hw12";
   int camera = 0;
-  double budget = 0;          // Samples to spend; 0: the whole image.
-  double min_identical = 0;   // Percent of byte-identical pixels; 0: the criterion's own.
+  double budget = 0;                // Samples to spend; 0: the whole image.
+  double min_identical = 0;         // Percent of byte-identical pixels; 0: the criterion's own.
   double double_min_identical = 0;  // The same when rendering in double; 0: min_identical.
-  double max_bias = -1;       // Largest |mean bias| of hw3, levels; < 0: the criterion's own.
-  double max_block_mae = -1;  // Largest 4x4-downsampled MAE of `block`; < 0: its own.
+  double max_bias = -1;             // Largest |mean bias| of hw3, levels; < 0: the criterion's own.
+  double max_block_mae = -1;        // Largest 4x4-downsampled MAE of `block`; < 0: its own.
   rt::Quantize quantize = rt::Quantize::kTruncate;
   rt::RenderOptions render;
 };
@@ -229,8 +229,7 @@ int main(int argc, char** argv) {
     double min_identical = a.min_identical > 0 ? a.min_identical
                            : hw3 || by_block   ? 0
                                                : kHw12Identical;
-    if (flat.double_precision && a.double_min_identical > 0)
-      min_identical = a.double_min_identical;
+    if (flat.double_precision && a.double_min_identical > 0) min_identical = a.double_min_identical;
     bool ok = hw3 ? (down.mae <= kHw3DownMae && full.mae <= kHw3Mae &&
                      std::abs(bias) <= (a.max_bias >= 0 ? a.max_bias : kHw3Bias))
                   : (full.mae <= kHw12Mae && full.frac_over <= kHw12Over8);
