@@ -129,14 +129,16 @@ RT_DEVICE RaySampler MakeRaySampler(SampleKey sk, uint key, int primary) {
 }
 
 // The ray's 2D sample number `offset` (one per light, lobe...): stratified on camera rays.
-RT_DEVICE real2 RaySample2D(RaySampler rs, uint offset) {
-  uint dim = HashCombine(rs.key, offset);
-  return rs.primary ? Stratified2D(rs.sk, dim) : Random2D(rs.sk, dim);
+// The sampler comes by pointer: a by-value copy of the 32-byte struct, stored field by field
+// by the caller and reloaded whole, stalled on store-to-load forwarding.
+RT_DEVICE real2 RaySample2D(RT_PRIVATE const RaySampler* rs, uint offset) {
+  uint dim = HashCombine(rs->key, offset);
+  return rs->primary ? Stratified2D(rs->sk, dim) : Random2D(rs->sk, dim);
 }
 
 // The ray's 1D sample number `offset`, never stratified.
-RT_DEVICE real RaySample1D(RaySampler rs, uint offset) {
-  return Random1D(rs.sk, HashCombine(rs.key, offset));
+RT_DEVICE real RaySample1D(RT_PRIVATE const RaySampler* rs, uint offset) {
+  return Random1D(rs->sk, HashCombine(rs->key, offset));
 }
 
 #endif  // RT_SAMPLER_H
