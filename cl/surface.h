@@ -96,9 +96,9 @@ RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd,
     if (transformed) sp.p = TransformPoint(inst->object_to_world, p_obj);
     if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0)
       sp.p = sp.p + ToReal3(inst->motion) * ray.time;
-    // --hit-point ray: origin + t * direction, whose rounding grows with the distance
-    // travelled, as the course's renderer forms its points; a member of
-    // tools/explain_ensemble.py (docs/course_pixel_residue.md), never the default.
+    // --hit-point ray (the default): origin + t * direction, whose rounding grows with the
+    // distance travelled, as the course's renderer forms its points, which decides some of
+    // its images' pixels (docs/course_pixel_residue.md); surface keeps the primitive's point.
     if ((sd->header->flags & RT_FLAG_RAY_HIT_POINT) != 0) sp.p = RayAt(ray, hit.t);
   }
   if (want_scale) {

@@ -84,11 +84,12 @@ OptionTable<RenderOptions> make_device_table() {
               "shading normal (interpolated on smooth meshes), as the course's renderer; "
               "geometric: the triangle's own, which never starts it behind the surface")
       .choice("--hit-point",
-              std::vector<std::pair<std::string, bool>>{{"surface", false}, {"ray", true}},
+              std::vector<std::pair<std::string, bool>>{{"ray", true}, {"surface", false}},
               RT_FIELD(ray_hit_point),
-              "where a hit lies: surface: rebuilt from the primitive (barycentrics, the unit "
-              "sphere), exact whatever the distance travelled; ray: origin + t * direction, as "
-              "the course's renderer forms it (tools/explain_ensemble.py's member)")
+              "where a hit lies: ray: origin + t * direction, as the course's renderer forms "
+              "it (its images' pixels decided by rounding; docs/course_pixel_residue.md); "
+              "surface: rebuilt from the primitive (barycentrics, the unit sphere), on the "
+              "surface whatever the distance travelled")
       .flag("--no-scene-epsilon", RT_FIELD(use_scene_epsilon),
             "ignore ShadowRayEpsilon; rely on the scale-aware ray offset alone", false);
   t.section("Kernel build", Reach::kDevice)

@@ -39,7 +39,7 @@ struct RenderOptions {
   bool robust_offset = false;           // Spawned rays: scene epsilon plus ulps (cl/ray.h).
   bool exact_camera_rays = false;       // Not the course's float camera rays (camera.h).
   bool geometric_offset = false;        // Shadow rays leave along ng, not the course's n.
-  bool ray_hit_point = false;           // Hit point o + t d, not from the primitive (surface.h).
+  bool ray_hit_point = true;            // Hit point o + t d, as the course; off: the primitive.
   bool fast_math = false;               // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   // The devices work in the camera's frame (src/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.

@@ -95,9 +95,10 @@ def synthetic():
     check(reach == (4, 4, 0), f"reach of a member equal to the course's image: {reach}")
     # The hit point member is our arithmetic; the independent model ranks after the
     # combined members, the conventions after everything.
-    order = sorted(["facing", "model:f32_sphere", "ray&world", "robust", "ray", "r2-1", "cull"],
-                   key=exp.rank)
-    check(order == ["ray", "r2-1", "ray&world", "model:f32_sphere", "robust", "cull", "facing"],
+    order = sorted(["facing", "model:f32_sphere", "exact&pos+1", "robust", "surface", "r2-1",
+                    "cull"], key=exp.rank)
+    check(order == ["surface", "r2-1", "exact&pos+1", "model:f32_sphere", "robust", "cull",
+                    "facing"],
           f"member order with model and conventions {order}")
     # A model file (tools/whitted_probe.py --batch lines) sets only the pixels it lists.
     path = os.path.join(os.environ.get("TMPDIR", "/tmp"), f"explain_model_{os.getpid()}.txt")

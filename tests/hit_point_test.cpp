@@ -1,7 +1,8 @@
-// --hit-point ray|surface (cl/surface.h): by default a hit point is rebuilt from the
-// primitive; `ray` forms it as origin + t * direction, as the course's renderer does, for
-// tools/explain_ensemble.py's member (docs/course_pixel_residue.md). The option changes the
-// point and nothing else, and reaches both devices bit for bit.
+// --hit-point ray|surface (cl/surface.h): by default (`ray`) a hit point is formed as
+// origin + t * direction, as the course's renderer does, which decides some pixels of its
+// images (docs/course_pixel_residue.md); `surface` rebuilds it from the primitive, for
+// tools/explain_ensemble.py's member. The option changes the point and nothing else, and
+// reaches both devices bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,8 +24,8 @@ bool SameBits(float3 a, float3 b) { return std::memcmp(&a, &b, sizeof(a)) == 0; 
 
 // A quad 3,000 units down the -z axis, seen from the origin: origin + t * direction rounds at
 // ulp(3000) = 2.4e-4 per coordinate, while the barycentric point rounds at the quad's own
-// coordinates. With `ray` the point is RayAt(ray, t) to the bit and the normals are those of
-// the default; by default the point stays closer to the quad's plane.
+// coordinates. By default (`ray`) the point is RayAt(ray, t) to the bit and the normals are
+// those of `surface`, whose point stays closer to the quad's plane.
 TEST(HitPoint, RayModeIsOriginPlusTTimesDirectionAndChangesOnlyThePoint) {
   rt::SceneDesc s = rt::test::BaseScene();
   const double z = -3000;
@@ -35,7 +36,9 @@ TEST(HitPoint, RayModeIsOriginPlusTTimesDirectionAndChangesOnlyThePoint) {
       rt::Mat4());
   rt::FlatScene surface = rt::test::Flatten(s);
   rt::FlatScene ray_mode = rt::test::Flatten(s);
-  ray_mode.header.flags |= RT_FLAG_RAY_HIT_POINT;
+  ASSERT_TRUE(rt::RenderOptions().ray_hit_point);  // The course's point is the default.
+  ASSERT_NE(ray_mode.header.flags & RT_FLAG_RAY_HIT_POINT, 0);
+  surface.header.flags &= ~RT_FLAG_RAY_HIT_POINT;
   SceneData sd_surface = surface.view(), sd_ray = ray_mode.view();
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-0.25, 0.25);
@@ -65,7 +68,7 @@ TEST(HitPoint, RayModeIsOriginPlusTTimesDirectionAndChangesOnlyThePoint) {
 
 // A lit sphere on a floor 1e4 units from the origin in the world's own frame, where the two
 // points differ by float's spacing there (about 1e-3): both devices render `ray` bit for bit
-// alike, and differently from the default.
+// alike, and differently from `surface`.
 TEST(HitPoint, RayModeReachesBothDevicesBitIdentically) {
   using stab::V;
   stab::Builder b;

@@ -213,9 +213,11 @@ int main(int argc, char** argv) {
     bias /= std::max<size_t>(1, img.rgb.size());
     std::printf(
         "%s: %dx%d, %d spp, stride %d (%.1f %% of the pixels): MAE %.3f, over 8: %.3f %%, "
-        "max %d, identical %.3f %%, bias %+.3f | 4x4 downsampled: MAE %.3f, over 8: %.3f %%\n",
+        "max %d, identical %.3f %% (%ld differ), bias %+.3f | 4x4 downsampled: MAE %.3f, over 8: "
+        "%.3f %%\n",
         files[1].c_str(), cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride),
-        full.mae, 100 * full.frac_over, full.max_abs, 100 * full.frac_identical, bias, down.mae,
+        full.mae, 100 * full.frac_over, full.max_abs, 100 * full.frac_identical,
+        std::lround((1 - full.frac_identical) * img.width * img.height), bias, down.mae,
         100 * down.frac_over);
     double min_identical = a.min_identical > 0 ? a.min_identical
                            : hw3 || by_block   ? 0

@@ -1,6 +1,6 @@
 #!/bin/bash
 # Regenerates the figures and per-pixel CSVs of docs/course_pixel_residue.md: for each
-# course image named (default: the three below 99.9 %), a rounding-sized ensemble of our
+# course image named (default: the two below 99.9 %), a rounding-sized ensemble of our
 # renderer (tools/explain_ensemble.py, full size, --device cpu) and the explanation of
 # every pixel where our image differs from the course's (tools/explain_pixels.py).
 #
@@ -14,7 +14,7 @@ build="${RT_BUILD:-$here/build}"
 work="${RT_WORK:-/tmp/course_pixel_residue}"
 csv_dir="${RT_CSV_DIR:-$here/docs/course_pixel_residue}"
 scenes="$here/../shared/scenes"
-[ $# -gt 0 ] || set -- hw1.spheres hw1.spheres_mirror hw2.grass_desert
+[ $# -gt 0 ] || set -- hw1.spheres hw1.spheres_mirror
 mkdir -p "$csv_dir"
 for name in "$@"; do
   line="$(awk -v n="$name" '$1 == n' "$here/tests/course_scenes.txt")"

@@ -39,11 +39,12 @@ The members (an ulp is the spacing of float32 at the quantity's magnitude):
   double     --precision double: the whole renderer's arithmetic in double
   world      --frame world: the scene rounded to float in the file's coordinates, as the
              course holds it, not in the camera's frame (meshes keep their own frames)
-  ray        --hit-point ray: the hit point formed as origin + t * direction, as the
-             course's renderer forms it, instead of rebuilt from the primitive (barycentrics,
-             the unit sphere): its rounding grows with the distance travelled
-  A&B        members A and B at once (double or exact with pos±1 or light±1; ray with
-             world, exact or double): the course's image carries all its roundings together
+  surface    --hit-point surface: the hit point rebuilt from the primitive (barycentrics,
+             the unit sphere) instead of formed as origin + t * direction, as the course's
+             renderer and our default form it (whose rounding grows with the distance
+             travelled)
+  A&B        members A and B at once (double or exact with pos±1 or light±1): the course's
+             image carries all its roundings together
   facing, geometric, cull
              conventions, not roundings (--reflection-offset facing, --shadow-offset
              geometric, --cull-back-faces where the flags do not cull already): they change
@@ -202,8 +203,9 @@ MEMBERS["exact"] = ("--camera-rays exact (no world-space float rounding of the c
 MEMBERS["double"] = ("--precision double (our arithmetic in double)", None, ["--precision", "double"])
 MEMBERS["world"] = ("--frame world (the scene rounded to float in the file's coordinates, as the "
                     "course holds it, instead of the camera's frame)", None, ["--frame", "world"])
-MEMBERS["ray"] = ("--hit-point ray (the hit point origin + t * direction, as the course forms it, "
-                  "not rebuilt from the primitive)", None, ["--hit-point", "ray"])
+MEMBERS["surface"] = ("--hit-point surface (the hit point rebuilt from the primitive, not origin + "
+                      "t * direction as the course and our default form it)", None,
+                      ["--hit-point", "surface"])
 # Conventions, not roundings: each changes how the renderer treats every pixel of a kind,
 # so a pixel only they attain says the course may decide that pixel differently, not that
 # rounding does (explain_pixels.py's family convention, reported apart).
@@ -232,9 +234,6 @@ def combine(*names):
 for first in ("double", "exact"):
     for second in ("pos+1", "pos-1", "light+1", "light-1"):
         MEMBERS[f"{first}&{second}"] = combine(first, second)
-# The course's hit point in the course's coordinates, and with each of our other roundings.
-for second in ("world", "exact", "double"):
-    MEMBERS[f"ray&{second}"] = combine("ray", second)
 
 
 def applicable(name, root, extra=()):

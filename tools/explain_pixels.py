@@ -10,7 +10,7 @@ differs from COURSE.png gets the first mechanism that explains it:
   rounding:FAMILY  some member of the ensemble attains the course's 8-bit value in all three
                    channels: the pixel is decided by rounding of that member's size.
                    Families, smallest first: arith (--precision double, --camera-rays
-                   exact, --frame world, --hit-point ray), camera (Position, Gaze,
+                   exact, --frame world, --hit-point surface), camera (Position, Gaze,
                    NearDistance by 1-2 ulps), light (point lights by 1 ulp), epsilon
                    (ShadowRayEpsilon by 1-2 ulps of the camera's coordinates), sphere (r^2
                    by 1/4 to 4 ulps of |centre - eye|^2), combined (two of these at once),
@@ -52,7 +52,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from classify_pixels import classify, read_exr_channels, read_png  # noqa: E402
 
-FAMILIES = (("arith", ("double", "exact", "world", "ray")),
+FAMILIES = (("arith", ("double", "exact", "world", "surface", "ray")),
             ("camera", ("pos", "posb", "posc", "posd", "gaze", "gazeb", "gazec", "gazed", "near")),
             ("light", ("light", "lightb", "lightc", "lightd")),
             ("epsilon", ("eps",)),
