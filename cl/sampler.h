@@ -21,7 +21,7 @@ typedef struct SampleKey {
   uint samples;  // Samples per pixel.
   uint strata;   // sqrt(samples) when a perfect square, else 0.
   uint seed;
-  uint prefix;  // Hash of (pixel, sample, seed): each dimension then costs one round.
+  uint prefix;        // Hash of (pixel, sample, seed): each dimension then costs one round.
   uint strata_magic;  // See StrataMagic.
 } SampleKey;
 
