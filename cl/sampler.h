@@ -21,7 +21,8 @@ typedef struct SampleKey {
   uint samples;  // Samples per pixel.
   uint strata;   // sqrt(samples) when a perfect square, else 0.
   uint seed;
-  uint prefix;  // Hash of (pixel, sample, seed): each dimension then costs one round.
+  uint prefix;        // Hash of (pixel, sample, seed): each dimension then costs one round.
+  uint strata_magic;  // See StrataMagic.
 } SampleKey;
 
 // The part of the key every sample of a pixel shares, hashed once per pixel: a sample's
@@ -31,7 +32,24 @@ typedef struct PixelKey {
   uint strata;
   uint seed;
   uint hash;  // HashUint(pixel), the first round of every sample's prefix.
+  uint strata_magic;
 } PixelKey;
+
+// floor(2^32 / strata) + 1, so a stratum index i < strata^2 divides by strata as
+// (i * magic) >> 32 exactly when strata is 2..1024 (Lemire, Kaser and Kurz 2019: exact for
+// 32 >= bits(i) + ceil(log2(strata))), saving the camera ray's integer division on every
+// light sample; 0 elsewhere, where the division stays.
+RT_DEVICE uint StrataMagic(uint strata) {
+  return strata >= 2u && strata <= 1024u ? 0xffffffffu / strata + 1u : 0u;
+}
+
+RT_DEVICE uint StratumRow(uint stratum, uint strata, uint magic) {
+#ifdef __OPENCL_C_VERSION__
+  return magic != 0u ? mul_hi(stratum, magic) : stratum / strata;
+#else
+  return magic != 0u ? (uint)(((std::uint64_t)stratum * magic) >> 32) : stratum / strata;
+#endif
+}
 
 RT_DEVICE PixelKey MakePixelKey(uint pixel, uint samples, uint strata, uint seed) {
   PixelKey p;
@@ -39,6 +57,7 @@ RT_DEVICE PixelKey MakePixelKey(uint pixel, uint samples, uint strata, uint seed
   p.strata = strata;
   p.seed = seed;
   p.hash = HashUint(pixel);
+  p.strata_magic = StrataMagic(strata);
   return p;
 }
 
@@ -51,6 +70,7 @@ RT_DEVICE SampleKey PixelSampleKey(PixelKey p, uint sample) {
   k.strata = p.strata;
   k.seed = p.seed;
   k.prefix = HashCombine(HashCombine(HashCombine(p.hash, sample), p.seed), 0x3c6ef372u);
+  k.strata_magic = p.strata_magic;
   return k;
 }
 
@@ -85,8 +105,8 @@ RT_DEVICE_INLINE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint strat
   if (k.strata <= 1u) return xi;
   uint stratum = PermutationElement(k.sample, k.samples, stratum_key);
   real inv = 1.0f / (real)k.strata;
-  return make_real2(((real)(stratum % k.strata) + xi.x) * inv,
-                    ((real)(stratum / k.strata) + xi.y) * inv);
+  uint row = StratumRow(stratum, k.strata, k.strata_magic);
+  return make_real2(((real)(stratum - row * k.strata) + xi.x) * inv, ((real)row + xi.y) * inv);
 }
 
 RT_DEVICE real2 Stratified2D(SampleKey k, uint dimension) {
@@ -129,14 +149,16 @@ RT_DEVICE RaySampler MakeRaySampler(SampleKey sk, uint key, int primary) {
 }
 
 // The ray's 2D sample number `offset` (one per light, lobe...): stratified on camera rays.
-RT_DEVICE real2 RaySample2D(RaySampler rs, uint offset) {
-  uint dim = HashCombine(rs.key, offset);
-  return rs.primary ? Stratified2D(rs.sk, dim) : Random2D(rs.sk, dim);
+// The sampler comes by pointer: a by-value copy of the 32-byte struct, stored field by field
+// by the caller and reloaded whole, stalled on store-to-load forwarding.
+RT_DEVICE real2 RaySample2D(RT_PRIVATE const RaySampler* rs, uint offset) {
+  uint dim = HashCombine(rs->key, offset);
+  return rs->primary ? Stratified2D(rs->sk, dim) : Random2D(rs->sk, dim);
 }
 
 // The ray's 1D sample number `offset`, never stratified.
-RT_DEVICE real RaySample1D(RaySampler rs, uint offset) {
-  return Random1D(rs.sk, HashCombine(rs.key, offset));
+RT_DEVICE real RaySample1D(RT_PRIVATE const RaySampler* rs, uint offset) {
+  return Random1D(rs->sk, HashCombine(rs->key, offset));
 }
 
 #endif  // RT_SAMPLER_H

@@ -138,7 +138,7 @@ TEST(LightDispatch, TypeTagChoosesTheSampler) {
   Light s = Square(V(0, 0, 2), 1, V(1, 1, 1));
   s.sample_index = 5;
   a = SampleLight(&scene.sd, &s, &ctx, rs);
-  b = SampleAreaLight(&s, &ctx, RaySample2D(rs, 0x1000u + 5u));
+  b = SampleAreaLight(&s, &ctx, RaySample2D(&rs, 0x1000u + 5u));
   EXPECT_EQ(a.p_light.x, b.p_light.x);
   EXPECT_EQ(a.p_light.y, b.p_light.y);
   // A type the kernel was compiled without is never sampled.

@@ -91,7 +91,7 @@ RT_DEVICE real3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
 RT_DEVICE int RouletteSurvives(RT_PRIVATE PathState* p, real3 throughput, RaySampler rs) {
   real q = fmin(RT_R(1.0), MaxComponent(throughput));
   if (q >= 1.0f) return 1;
-  if (!(q > 0.0f) || RaySample1D(rs, RT_DIM_RUSSIAN_ROULETTE) >= q) return 0;
+  if (!(q > 0.0f) || RaySample1D(&rs, RT_DIM_RUSSIAN_ROULETTE) >= q) return 0;
   p->weight = p->weight * (1.0f / q);
   return 1;
 }

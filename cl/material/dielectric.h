@@ -48,7 +48,7 @@ RT_DEVICE void ScatterDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
   DielectricEvent e = DielectricFresnel(m, s);
   real fr = e.fr;
   int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0;
-  real pick = choose ? RaySample1D(rs, RT_DIM_FRESNEL_CHOICE) : 0.0f;
+  real pick = choose ? RaySample1D(&rs, RT_DIM_FRESNEL_CHOICE) : 0.0f;
   int do_reflect = !choose || pick < fr;
   int do_refract = fr < 1.0f && (!choose || pick >= fr);
   real3 w = task->weight;
@@ -74,7 +74,7 @@ RT_DEVICE BsdfSample SampleDielectric(RT_PRIVATE const SceneData* sd, RT_PRIVATE
                                       RT_PRIVATE const SurfacePoint* s, RaySampler rs, int transmit,
                                       int choose) {
   DielectricEvent e = DielectricFresnel(m, s);
-  if (choose) transmit = RaySample1D(rs, RT_DIM_FRESNEL_CHOICE) >= e.fr;
+  if (choose) transmit = RaySample1D(&rs, RT_DIM_FRESNEL_CHOICE) >= e.fr;
   real w = choose ? 1.0f : (transmit ? 1.0f - e.fr : e.fr);
   if (!(w > 0.0f)) return NoBsdfSample();
   real3 wi = transmit ? DielectricRefraction(sd, m, s, e, rs) : MirrorDirection(sd, m, s, rs);

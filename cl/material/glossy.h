@@ -17,7 +17,7 @@ RT_DEVICE real3 PerturbDirection(real3 r, real roughness, real2 xi) {
 RT_DEVICE real3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                 real3 r, RaySampler rs) {
   if (!RT_HAS(sd, RT_FEATURE_ROUGHNESS) || m->roughness <= 0.0f) return r;
-  return PerturbDirection(r, m->roughness, RaySample2D(rs, 0x2000u));
+  return PerturbDirection(r, m->roughness, RaySample2D(&rs, 0x2000u));
 }
 
 #endif  // RT_MATERIAL_GLOSSY_H

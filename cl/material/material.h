@@ -97,7 +97,7 @@ RT_DEVICE BsdfSample SampleReflectionLobe(RT_PRIVATE const SceneData* sd,
                                           RT_PRIVATE const SurfacePoint* s, RaySampler rs,
                                           int importance) {
   real pdf;
-  real3 wi = SampleReflectionDirection(s, RaySample2D(rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
+  real3 wi = SampleReflectionDirection(s, RaySample2D(&rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
   real cos_i = Dot(wi, s->n);
   // A direction below the geometric surface would leak through it.
   if (!(pdf > 0.0f) || !(cos_i > 0.0f) || Dot(wi, s->ng) <= 0.0f) return NoBsdfSample();
@@ -136,7 +136,7 @@ RT_DEVICE BsdfSample SampleBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
                                 RT_PRIVATE const SurfacePoint* s, RaySampler rs, int importance) {
   real share = ReflectionShare(sd, m, s);
   BsdfSample bs;
-  if (share < 1.0f && (share <= 0.0f || RaySample1D(rs, RT_DIM_BSDF_LOBE) >= share)) {
+  if (share < 1.0f && (share <= 0.0f || RaySample1D(&rs, RT_DIM_BSDF_LOBE) >= share)) {
     if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
       bs = SampleDielectric(sd, m, s, rs, 0, 1);
     else
