@@ -38,8 +38,10 @@ RT_DEVICE int SurfaceScaleRead(RT_PRIVATE const SceneData* sd) {
   return RT_ROBUST_OFFSET(sd) || !(sd->header->shadow_epsilon > 0.0f);
 }
 
-// The position is rebuilt from the primitive (barycentrics on a triangle, a projection
-// onto the unit sphere) rather than from origin + t * direction, so its error does not
+// The position is origin + t * direction by default (--hit-point ray), as the course's
+// renderer forms its points, whose rounding decides some of its images' pixels
+// (docs/course_pixel_residue.md); --hit-point surface rebuilds it from the primitive
+// (barycentrics on a triangle, a projection onto the unit sphere), so its error does not
 // grow with the distance travelled. Each part is computed as in the whole point, so a part
 // is the same to the bit whatever else is asked.
 // The ray and hit come by pointer: passed by value, both are copied at every call.
@@ -54,6 +56,8 @@ RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd,
   int want_point = (parts & RT_SURFACE_POINT) != 0,
       want_normals = (parts & RT_SURFACE_NORMALS) != 0;
   int want_scale = want_point && SurfaceScaleRead(sd);
+  // The primitive's own point is built only where it is the surface point.
+  int ray_point = (sd->header->flags & RT_FLAG_RAY_HIT_POINT) != 0;
   SurfacePoint sp;
   sp.material = inst->material;
   sp.time = ray.time;
@@ -76,7 +80,7 @@ RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd,
     real b0 = 1.0f - hit.b1 - hit.b2;
     real3 v0 = ToReal3(tri->v0), v1 = ToReal3(tri->v1), v2 = ToReal3(tri->v2);
     if (want_point) {
-      p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
+      if (!ray_point) p_obj = v0 * b0 + v1 * hit.b1 + v2 * hit.b2;
       if (want_scale)
         mag = MaxF(MaxComponent(Abs3(v0)), MaxF(MaxComponent(Abs3(v1)), MaxComponent(Abs3(v2))));
     }
@@ -91,15 +95,13 @@ RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd,
   }
   sp.p = Vec3(0.0f);
   sp.scale = 0.0f;
-  if (want_point) {
+  if (want_point && ray_point) {
+    sp.p = RayAt(ray, hit.t);
+  } else if (want_point) {
     sp.p = p_obj;
     if (transformed) sp.p = TransformPoint(inst->object_to_world, p_obj);
     if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && (inst->flags & RT_INSTANCE_MOVING) != 0)
       sp.p = sp.p + ToReal3(inst->motion) * ray.time;
-    // --hit-point ray (the default): origin + t * direction, whose rounding grows with the
-    // distance travelled, as the course's renderer forms its points, which decides some of
-    // its images' pixels (docs/course_pixel_residue.md); surface keeps the primitive's point.
-    if ((sd->header->flags & RT_FLAG_RAY_HIT_POINT) != 0) sp.p = RayAt(ray, hit.t);
   }
   if (want_scale) {
     sp.scale = mag;
