@@ -17,7 +17,7 @@
 // The random dimension of a light's sample at a ray, offset from the ray's key (the
 // course's first bounce stratifies it; see RaySampler).
 RT_DEVICE uint LightSampleOffset(RT_GLOBAL const Light* light) {
-  return 0x1000u + (uint)light->sample_index;
+  return RT_OFFSET_LIGHT + (uint)light->sample_index;
 }
 
 RT_DEVICE LightSample SampleLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
