@@ -21,20 +21,21 @@ RT_DEVICE uint LightSampleOffset(RT_GLOBAL const Light* light) {
 }
 
 RT_DEVICE LightSample SampleLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
-                                  RT_PRIVATE const LightSampleContext* ctx, RaySampler rs) {
+                                  RT_PRIVATE const LightSampleContext* ctx,
+                                  RT_PRIVATE const RaySampler* rs) {
   if (RT_HAS(sd, RT_LIGHT_POINT) && light->type == RT_LIGHT_POINT)
     return SamplePointLight(light, ctx);
   if (RT_HAS(sd, RT_LIGHT_AREA) && light->type == RT_LIGHT_AREA)
-    return SampleAreaLight(light, ctx, RaySample2D(&rs, LightSampleOffset(light)));
+    return SampleAreaLight(light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   if (RT_HAS(sd, RT_LIGHT_DIRECTIONAL) && light->type == RT_LIGHT_DIRECTIONAL)
     return SampleDirectionalLight(light, ctx);
   if (RT_HAS(sd, RT_LIGHT_SPOT) && light->type == RT_LIGHT_SPOT) return SampleSpotLight(light, ctx);
   if (RT_HAS(sd, RT_LIGHT_MESH) && light->type == RT_LIGHT_MESH)
-    return SampleMeshLight(sd, light, ctx, RaySample2D(&rs, LightSampleOffset(light)));
+    return SampleMeshLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   if (RT_HAS(sd, RT_LIGHT_SPHERE) && light->type == RT_LIGHT_SPHERE)
-    return SampleSphereLight(sd, light, ctx, RaySample2D(&rs, LightSampleOffset(light)));
+    return SampleSphereLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   if (RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && light->type == RT_LIGHT_ENVIRONMENT)
-    return SampleEnvironmentLight(sd, light, ctx, RaySample2D(&rs, LightSampleOffset(light)));
+    return SampleEnvironmentLight(sd, light, ctx, RaySample2D(rs, LightSampleOffset(light)));
   LightSample none = LightSampleTowards(ctx->p, ctx->p, Vec3(0.0f));  // Not valid.
   return none;
 }
