@@ -109,6 +109,10 @@ RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && h->background_texture >= 0)
     cp.uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
   cp.key = MakePixelKey((uint)(y * cam->width + x), (uint)cam->samples, (uint)cam->strata, h->seed);
+  // The camera ray's light sample is made with the camera sample where the scene draws one
+  // (CacheCameraRaySamples).
+  if (RT_HAS(sd, RT_LIGHT_AREA | RT_FEATURE_OBJECT_LIGHTS | RT_LIGHT_ENVIRONMENT))
+    CacheCameraRaySamples(&cp.key, RT_CACHE_LIGHT);
   cp.film_strata = cp.lens_strata = cp.time_strata = 0u;
   // One stratum (one sample per pixel) needs no permutation key (Stratified2DKeyed).
   if (cam->strata > 1) {

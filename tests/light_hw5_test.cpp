@@ -80,12 +80,12 @@ TEST(LightDispatch, DirectionalAndSpotTags) {
   LightSampleContext ctx = MakeLightSampleContext(V(0, 0, 0), V(0, 0, 1), V(0, 0, 1));
   RaySampler rs{};
   Light d = Directional(V(0, 0, -1), V(7, 7, 7), 10);
-  EXPECT_EQ(SampleLight(&sd, &d, &ctx, rs).irradiance.x, 7.0f);
+  EXPECT_EQ(SampleLight(&sd, &d, &ctx, &rs).irradiance.x, 7.0f);
   Light s = Spot(V(0, 0, 2), V(0, 0, -1), 8, 90, 30);
-  EXPECT_EQ(SampleLight(&sd, &s, &ctx, rs).irradiance.x, 2.0f);
+  EXPECT_EQ(SampleLight(&sd, &s, &ctx, &rs).irradiance.x, 2.0f);
   header.features = RT_FEATURE_ALL & ~(RT_LIGHT_DIRECTIONAL | RT_LIGHT_SPOT);
-  EXPECT_FALSE(SampleLight(&sd, &d, &ctx, rs).valid);  // Compiled out: never sampled.
-  EXPECT_FALSE(SampleLight(&sd, &s, &ctx, rs).valid);
+  EXPECT_FALSE(SampleLight(&sd, &d, &ctx, &rs).valid);  // Compiled out: never sampled.
+  EXPECT_FALSE(SampleLight(&sd, &s, &ctx, &rs).valid);
 }
 
 // ---- Rendered closed forms: a diffuse floor (kd = 0.5) at z = 0 seen at the origin ----

@@ -132,18 +132,18 @@ TEST(LightDispatch, TypeTagChoosesTheSampler) {
   LightSampleContext ctx = MakeLightSampleContext(V(0, 0, 0), V(0, 0, 1), V(0, 0, 1));
   RaySampler rs = MakeRaySampler(MakeSampleKey(7, 3, 16, 4, 0), 1234u, 0);
   Light p = PointAt(V(0, 0, 2), V(4, 4, 4));
-  LightSample a = SampleLight(&scene.sd, &p, &ctx, rs);
+  LightSample a = SampleLight(&scene.sd, &p, &ctx, &rs);
   LightSample b = SamplePointLight(&p, &ctx);
   EXPECT_EQ(a.irradiance.x, b.irradiance.x);
   Light s = Square(V(0, 0, 2), 1, V(1, 1, 1));
   s.sample_index = 5;
-  a = SampleLight(&scene.sd, &s, &ctx, rs);
+  a = SampleLight(&scene.sd, &s, &ctx, &rs);
   b = SampleAreaLight(&s, &ctx, RaySample2D(&rs, 0x1000u + 5u));
   EXPECT_EQ(a.p_light.x, b.p_light.x);
   EXPECT_EQ(a.p_light.y, b.p_light.y);
   // A type the kernel was compiled without is never sampled.
   scene.header.features = RT_FEATURE_ALL & ~RT_LIGHT_AREA;
-  EXPECT_FALSE(SampleLight(&scene.sd, &s, &ctx, rs).valid);
+  EXPECT_FALSE(SampleLight(&scene.sd, &s, &ctx, &rs).valid);
 }
 
 TEST(LightArray, FlattenTagsPointLightsFirstAndNumbersTheSampledOnes) {

@@ -34,10 +34,12 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
 
 // l plus one sample of every light, summed in the lights' array order (point lights, then
 // area lights), which fixes the last bit of the result. `rs` draws the area lights'
-// samples. The path tracer's next-event estimation is this sum.
+// samples; it comes by pointer, as to RaySample2D (a by-value copy, stored field by field by
+// the caller and reloaded in 16-byte halves here, stalled on store-to-load forwarding). The
+// path tracer's next-event estimation is this sum.
 RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
-                                RT_PRIVATE const Material* m, RaySampler rs, real3 l,
-                                RT_PRIVATE uint* rays) {
+                                RT_PRIVATE const Material* m, RT_PRIVATE const RaySampler* rs,
+                                real3 l, RT_PRIVATE uint* rays) {
   LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
   // Summed per component, in the same order as l += c: the CPU reference receives l in two
   // registers, and reassembling it whole went through memory (a store-forwarding stall).
@@ -71,7 +73,7 @@ RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
   if (sd->header->num_lights == 0) return ambient;
   int blinn_phong = !RT_HAS(sd, RT_FEATURE_BRDF) || m->brdf == RT_BRDF_ORIGINAL_BLINN_PHONG;
   if (blinn_phong && BlinnPhongIsBlack(m)) return ambient;
-  return AddLightSamples(sd, s, m, rs, ambient, rays);
+  return AddLightSamples(sd, s, m, &rs, ambient, rays);
 }
 
 #endif  // RT_INTEGRATOR_DIRECT_LIGHTING_H

@@ -164,7 +164,7 @@ RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_
       FaceForward(&s);
       RaySampler rs = MakeRaySampler(sk, p.key, p.bounce == 0);
       if (alive && nee && ReflectionShare(sd, &m, &s) > 0.0f)
-        found = AddLightSamples(sd, &s, &m, rs, found, rays);
+        found = AddLightSamples(sd, &s, &m, &rs, found, rays);
       alive = alive && p.bounce < max_bounces;
       if (alive && course_roulette) alive = RouletteSurvives(&p, p.roulette, rs);
       radiance += p.weight * found;
