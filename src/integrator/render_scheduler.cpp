@@ -35,7 +35,7 @@ std::vector<RenderWork> RenderScheduler::plan() const {
         std::clamp<long>(want, 1, std::min<long>(4L * last_pass_samples_, 1L << 20)));
     // A last pass no larger than this one is taken with it (see the header).
     const int rest = samples_ - done_;
-    if (take_rest_ && want >= rest && rest <= 2 * n) n = rest;
+    if (take_rest_ && rest <= 2 * n) n = rest;
   }
   const bool banded = measured_ && image_cost * n > kSplitSeconds;
   const int s1 = std::min(samples_, done_ + n);

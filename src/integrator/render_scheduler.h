@@ -12,10 +12,11 @@
 // kTargetSeconds each, so each launch stays short (progress, GPU watchdogs). Sampling stops after a
 // pass when every sample is taken, when cancellation is asked, when the next pass would end after
 // the time limit, or when the estimated relative noise is below the target. A pass
-// after which the samples left would make a last pass no larger than it takes them too, when
-// the target allows: the fourfold growth only guards the estimate, and each pass costs every
-// pixel its setup again (tap_0200 at 9 samples: 1 + 8 instead of 1 + 4 + 4, ~5 % less CPU
-// time). Under a stop rule the passes stay fourfold, as the points where it is checked.
+// after which the samples left would make a last pass no larger than it takes them too (at
+// most twice its planned samples, its bands then half as tall): the fourfold growth only
+// guards the estimate, and each pass costs every pixel its setup again (tap_0200 at 9
+// samples: 1 + 8 instead of 1 + 4 + 4, ~8 % less CPU per sample). Under a stop rule the
+// passes stay fourfold, as the points where it is checked.
 #pragma once
 
 #include <atomic>
