@@ -136,14 +136,18 @@ typedef struct CameraSample {
   Ray ray;
 } CameraSample;
 
-RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
-                                                  RT_PRIVATE const CameraPixel* cp, uint sample) {
+// `film_stratum`: the sample's film stratum, PermutationElement(sample, samples, film_strata)
+// where the film is stratified (RT_FEATURE_MULTISAMPLE, strata > 1), made by the caller:
+// cl/film.h makes a batch's at once.
+RT_DEVICE_INLINE CameraSample GeneratePixelSampleIn(RT_PRIVATE const SceneData* sd,
+                                                    RT_PRIVATE const CameraPixel* cp, uint sample,
+                                                    uint film_stratum) {
   RT_GLOBAL const Camera* cam = &sd->header->camera;
   CameraSample cs;
   cs.key = PixelSampleKey(cp->key, sample);
   cs.film = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1)
-    cs.film = Stratified2DKeyed(cs.key, RT_DIM_PIXEL, cp->film_strata);
+    cs.film = StratumPoint2D(cs.key, RT_DIM_PIXEL, film_stratum);
   real2 lens = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD))
     lens = Stratified2DKeyed(cs.key, RT_DIM_LENS, cp->lens_strata);
@@ -153,6 +157,14 @@ RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd
   cs.ray = GenerateCameraRay(sd, cp->course_pixel_size, (real)cp->x + cs.film.x,
                              (real)cp->y + cs.film.y, lens, time);
   return cs;
+}
+
+RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
+                                                  RT_PRIVATE const CameraPixel* cp, uint sample) {
+  uint stratum = 0u;
+  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cp->key.strata > 1u)
+    stratum = PermutationElement(sample, cp->key.samples, cp->film_strata);
+  return GeneratePixelSampleIn(sd, cp, sample, stratum);
 }
 
 RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int x, int y,

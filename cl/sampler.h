@@ -86,14 +86,20 @@ RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
 // One point of a jittered n x n pattern per sample, in [0, 1)^2, its stratum permuted by
 // `stratum_key` (StratumKey of the dimension); random when the sample count is not a
 // perfect square. One sample per pixel is one stratum, whose point is xi itself
-// ((0 + xi) * 1, exactly), so the permutation is skipped.
-RT_DEVICE_INLINE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint stratum_key) {
+// ((0 + xi) * 1, exactly), so the permutation is skipped. StratumPoint2D is the point in
+// stratum `stratum` (the permutation element, made by the caller: cl/film.h makes a batch's
+// film strata at once, PermutationElements).
+RT_DEVICE_INLINE real2 StratumPoint2D(SampleKey k, uint dimension, uint stratum) {
   real2 xi = Random2D(k, dimension);
   if (k.strata <= 1u) return xi;
-  uint stratum = PermutationElement(k.sample, k.samples, stratum_key);
   real inv = 1.0f / (real)k.strata;
   uint row = StratumRow(stratum, k.strata, k.strata_magic);
   return make_real2(((real)(stratum - row * k.strata) + xi.x) * inv, ((real)row + xi.y) * inv);
+}
+
+RT_DEVICE_INLINE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint stratum_key) {
+  return StratumPoint2D(k, dimension,
+                        k.strata <= 1u ? 0u : PermutationElement(k.sample, k.samples, stratum_key));
 }
 
 RT_DEVICE real2 Stratified2D(SampleKey k, uint dimension) {

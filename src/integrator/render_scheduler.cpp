@@ -33,6 +33,9 @@ std::vector<RenderWork> RenderScheduler::plan() const {
     long want = std::lround(kTargetSeconds / std::max(min_band_cost, 1e-9));
     n = static_cast<int>(
         std::clamp<long>(want, 1, std::min<long>(4L * last_pass_samples_, 1L << 20)));
+    // A last pass no larger than this one is taken with it (see the header).
+    const int rest = samples_ - done_;
+    if (take_rest_ && rest <= 2 * n) n = rest;
   }
   const bool banded = measured_ && image_cost * n > kSplitSeconds;
   const int s1 = std::min(samples_, done_ + n);
@@ -75,6 +78,7 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
   using Clock = std::chrono::steady_clock;
   RenderScheduler scheduler(cam.width, cam.height, cam.samples, device.row_alignment(), row_begin,
                             row_end);
+  if (stop.time_limit_s > 0 || stop.noise_target > 0) scheduler.keep_checkpoints();
   const auto start = Clock::now();
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
