@@ -136,12 +136,13 @@ typedef struct CameraSample {
   Ray ray;
 } CameraSample;
 
-// `film_stratum`: the sample's film stratum, PermutationElement(sample, samples, film_strata)
-// where the film is stratified (RT_FEATURE_MULTISAMPLE, strata > 1), made by the caller:
+// `film_stratum` and `lens_stratum`: the sample's film and lens strata,
+// PermutationElement(sample, samples, film_strata / lens_strata) where the film (or the
+// lens, RT_FEATURE_DEPTH_OF_FIELD) is stratified (strata > 1), made by the caller:
 // cl/film.h makes a batch's at once.
 RT_DEVICE_INLINE CameraSample GeneratePixelSampleIn(RT_PRIVATE const SceneData* sd,
                                                     RT_PRIVATE const CameraPixel* cp, uint sample,
-                                                    uint film_stratum) {
+                                                    uint film_stratum, uint lens_stratum) {
   RT_GLOBAL const Camera* cam = &sd->header->camera;
   CameraSample cs;
   cs.key = PixelSampleKey(cp->key, sample);
@@ -150,7 +151,7 @@ RT_DEVICE_INLINE CameraSample GeneratePixelSampleIn(RT_PRIVATE const SceneData* 
     cs.film = StratumPoint2D(cs.key, RT_DIM_PIXEL, film_stratum);
   real2 lens = make_real2(0.5f, 0.5f);
   if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD))
-    lens = Stratified2DKeyed(cs.key, RT_DIM_LENS, cp->lens_strata);
+    lens = StratumPoint2D(cs.key, RT_DIM_LENS, lens_stratum);
   real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR))
     time = Stratified1DKeyed(cs.key, RT_DIM_TIME, cp->time_strata);
@@ -161,10 +162,12 @@ RT_DEVICE_INLINE CameraSample GeneratePixelSampleIn(RT_PRIVATE const SceneData* 
 
 RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
                                                   RT_PRIVATE const CameraPixel* cp, uint sample) {
-  uint stratum = 0u;
+  uint film_stratum = 0u, lens_stratum = 0u;
   if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cp->key.strata > 1u)
-    stratum = PermutationElement(sample, cp->key.samples, cp->film_strata);
-  return GeneratePixelSampleIn(sd, cp, sample, stratum);
+    film_stratum = PermutationElement(sample, cp->key.samples, cp->film_strata);
+  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cp->key.strata > 1u)
+    lens_stratum = PermutationElement(sample, cp->key.samples, cp->lens_strata);
+  return GeneratePixelSampleIn(sd, cp, sample, film_stratum, lens_stratum);
 }
 
 RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int x, int y,

@@ -35,20 +35,24 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
   uint rays = 0u;
   CameraPixel cp = MakeCameraPixel(sd, x, y);
 #if RT_CAMERA_BATCH > 1
-  // The batch's film strata are made at once (PermutationElements): one at a time, each
-  // sample's walk ended in a mispredicted branch about every other sample, and its division
-  // lay on the chain to the ray (tap_0200, 9 spp, one thread: ~5 % of the time per sample).
+  // The batch's film and lens strata are made at once (PermutationElements): one at a time,
+  // each sample's walk ended in a mispredicted branch about every other sample, and its
+  // division lay on the chain to the ray (tap_0200, 9 spp, one thread: ~5 % of the time per
+  // sample).
   int film_strata = RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cp.key.strata > 1u;
-  uint stratum[RT_PERMUTATION_BATCH];
-  for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) stratum[k] = 0u;
+  int lens_strata = RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cp.key.strata > 1u;
+  uint stratum[RT_PERMUTATION_BATCH], lens_stratum[RT_PERMUTATION_BATCH];
+  for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) stratum[k] = lens_stratum[k] = 0u;
 #endif
   for (int first = begin; first < end; first += RT_CAMERA_BATCH) {
     int n = end - first < RT_CAMERA_BATCH ? end - first : RT_CAMERA_BATCH;
     CameraSample batch[RT_CAMERA_BATCH];
 #if RT_CAMERA_BATCH > 1
     if (film_strata) PermutationElements((uint)first, n, cp.key.samples, cp.film_strata, stratum);
+    if (lens_strata)
+      PermutationElements((uint)first, n, cp.key.samples, cp.lens_strata, lens_stratum);
     for (int k = 0; k < n; ++k)
-      batch[k] = GeneratePixelSampleIn(sd, &cp, (uint)(first + k), stratum[k]);
+      batch[k] = GeneratePixelSampleIn(sd, &cp, (uint)(first + k), stratum[k], lens_stratum[k]);
 #else
     for (int k = 0; k < n; ++k) batch[k] = GeneratePixelSample(sd, &cp, (uint)(first + k));
 #endif

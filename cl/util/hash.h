@@ -91,7 +91,8 @@ RT_DEVICE uint PermutationElement(uint i, uint n, uint key) {
 // on a branch; the few still outside [0, n) after them (n = 9: 2 % of elements) walk on
 // alone. The same values as PermutationElement.
 #define RT_PERMUTATION_BATCH 8
-RT_DEVICE void PermutationElements(uint first, int count, uint n, uint key, RT_PRIVATE uint* out) {
+RT_DEVICE_INLINE void PermutationElements(uint first, int count, uint n, uint key,
+                                          RT_PRIVATE uint* out) {
   uint w = PermutationMask(n);
   for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
     uint a = PermutationRound(first + (uint)k, w, key);
