@@ -88,7 +88,7 @@ RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
 // perfect square. One sample per pixel is one stratum, whose point is xi itself
 // ((0 + xi) * 1, exactly), so the permutation is skipped. StratumPoint2D is the point in
 // stratum `stratum` (the permutation element, made by the caller: cl/film.h makes a batch's
-// film strata at once, PermutationElements).
+// film and lens strata at once, PermutationElements).
 RT_DEVICE_INLINE real2 StratumPoint2D(SampleKey k, uint dimension, uint stratum) {
   real2 xi = Random2D(k, dimension);
   if (k.strata <= 1u) return xi;
