@@ -136,38 +136,93 @@ typedef struct CameraSample {
   Ray ray;
 } CameraSample;
 
-// `film_stratum` and `lens_stratum`: the sample's film and lens strata,
-// PermutationElement(sample, samples, film_strata / lens_strata) where the film (or the
-// lens, RT_FEATURE_DEPTH_OF_FIELD) is stratified (strata > 1), made by the caller:
-// cl/film.h makes a batch's at once.
-RT_DEVICE_INLINE CameraSample GeneratePixelSampleIn(RT_PRIVATE const SceneData* sd,
-                                                    RT_PRIVATE const CameraPixel* cp, uint sample,
-                                                    uint film_stratum, uint lens_stratum) {
-  RT_GLOBAL const Camera* cam = &sd->header->camera;
+// Whether the camera samples' film and lens positions are drawn (else the pixel's and the
+// lens's centre).
+RT_DEVICE int CameraFilmDrawn(RT_PRIVATE const SceneData* sd) {
+  return RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && sd->header->camera.samples > 1;
+}
+#define RT_CAMERA_LENS_DRAWN(sd) RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)
+
+// Camera sample `sample` of a pixel, given its prefix (PixelSamplePrefix) and its film and
+// lens positions in [0, 1)^2 (GeneratePixelSample; cl/film.h makes a batch's at once,
+// CameraBatchPoints).
+RT_DEVICE_INLINE CameraSample CameraSampleOf(RT_PRIVATE const SceneData* sd,
+                                             RT_PRIVATE const CameraPixel* cp, uint sample,
+                                             uint prefix, real2 film, real2 lens) {
   CameraSample cs;
-  cs.key = PixelSampleKey(cp->key, sample);
-  cs.film = make_real2(0.5f, 0.5f);
-  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cam->samples > 1)
-    cs.film = StratumPoint2D(cs.key, RT_DIM_PIXEL, film_stratum);
-  real2 lens = make_real2(0.5f, 0.5f);
-  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD))
-    lens = StratumPoint2D(cs.key, RT_DIM_LENS, lens_stratum);
+  cs.key = PixelSampleKeyOf(cp->key, sample, prefix);
+  cs.film = film;
   real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR))
     time = Stratified1DKeyed(cs.key, RT_DIM_TIME, cp->time_strata);
-  cs.ray = GenerateCameraRay(sd, cp->course_pixel_size, (real)cp->x + cs.film.x,
-                             (real)cp->y + cs.film.y, lens, time);
+  cs.ray = GenerateCameraRay(sd, cp->course_pixel_size, (real)cp->x + film.x, (real)cp->y + film.y,
+                             lens, time);
   return cs;
 }
 
 RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
                                                   RT_PRIVATE const CameraPixel* cp, uint sample) {
-  uint film_stratum = 0u, lens_stratum = 0u;
-  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cp->key.strata > 1u)
-    film_stratum = PermutationElement(sample, cp->key.samples, cp->film_strata);
-  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cp->key.strata > 1u)
-    lens_stratum = PermutationElement(sample, cp->key.samples, cp->lens_strata);
-  return GeneratePixelSampleIn(sd, cp, sample, film_stratum, lens_stratum);
+  uint prefix = PixelSamplePrefix(cp->key, sample);
+  SampleKey k = PixelSampleKeyOf(cp->key, sample, prefix);
+  real2 film = make_real2(0.5f, 0.5f), lens = make_real2(0.5f, 0.5f);
+  if (CameraFilmDrawn(sd)) film = Stratified2DKeyed(k, RT_DIM_PIXEL, cp->film_strata);
+  if (RT_CAMERA_LENS_DRAWN(sd)) lens = Stratified2DKeyed(k, RT_DIM_LENS, cp->lens_strata);
+  return CameraSampleOf(sd, cp, sample, prefix, film, lens);
+}
+
+// The stratified points (Stratified2DKeyed) of a batch: jitter xi[k], xi[B + k] in stratum
+// stratum[k] of the pixel's pattern, into out[k], out[B + k] (B = RT_PERMUTATION_BATCH).
+RT_DEVICE_INLINE void BatchStratumPoints(PixelKey p, RT_PRIVATE const uint* stratum,
+                                         RT_PRIVATE real* xi, RT_PRIVATE real* out) {
+  if (p.strata <= 1u) {
+    for (int k = 0; k < 2 * RT_PERMUTATION_BATCH; ++k) out[k] = xi[k];
+    return;
+  }
+  real inv = 1.0f / (real)p.strata;
+  uint row[RT_PERMUTATION_BATCH];
+  // Two loops, so the magic multiply's is vectorized: with the division as its alternative
+  // (StratumRow), GCC left it scalar.
+  if (p.strata_magic != 0u) {
+    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k)
+      row[k] = StratumRow(stratum[k], p.strata, p.strata_magic);
+  } else {
+    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) row[k] = stratum[k] / p.strata;
+  }
+  for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
+    // The stratum indices are below 2^31, so converting them as ints gives StratumPointOf's
+    // floats.
+    out[k] = ((real)(int)(stratum[k] - row[k] * p.strata) + xi[k]) * inv;
+    out[RT_PERMUTATION_BATCH + k] = ((real)(int)row[k] + xi[RT_PERMUTATION_BATCH + k]) * inv;
+  }
+}
+
+// The prefixes and film and lens positions of samples first .. first + B - 1 of the pixel
+// (B = RT_PERMUTATION_BATCH), as GeneratePixelSample makes them, for the CPU reference's
+// camera batch (cl/film.h): prefix[k], film (point[k], point[B + k]), lens (point[2B + k],
+// point[3B + k]); film_stratum and lens_stratum as PermutationElements makes them. A
+// sample's prefix and jitters are seven hash rounds, one sample's a chain of scalar
+// multiplies and shifts: as loops over the batch, the compiler makes each eight lanes wide.
+RT_DEVICE_INLINE void CameraBatchPoints(RT_PRIVATE const SceneData* sd, PixelKey p, uint first,
+                                        RT_PRIVATE const uint* film_stratum,
+                                        RT_PRIVATE const uint* lens_stratum,
+                                        RT_PRIVATE uint* prefix, RT_PRIVATE real* point) {
+  for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) prefix[k] = PixelSamplePrefix(p, first + (uint)k);
+  real xi[2 * RT_PERMUTATION_BATCH];
+  for (int k = 0; k < 4 * RT_PERMUTATION_BATCH; ++k) point[k] = 0.5f;
+  if (CameraFilmDrawn(sd)) {
+    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
+      xi[k] = RandomOfPrefix(prefix[k], RT_DIM_PIXEL);
+      xi[RT_PERMUTATION_BATCH + k] = RandomOfPrefix(prefix[k], RT_DIM_SECOND(RT_DIM_PIXEL));
+    }
+    BatchStratumPoints(p, film_stratum, xi, point);
+  }
+  if (RT_CAMERA_LENS_DRAWN(sd)) {
+    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
+      xi[k] = RandomOfPrefix(prefix[k], RT_DIM_LENS);
+      xi[RT_PERMUTATION_BATCH + k] = RandomOfPrefix(prefix[k], RT_DIM_SECOND(RT_DIM_LENS));
+    }
+    BatchStratumPoints(p, lens_stratum, xi, point + 2 * RT_PERMUTATION_BATCH);
+  }
 }
 
 RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int x, int y,

@@ -51,8 +51,15 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
     if (film_strata) PermutationElements((uint)first, n, cp.key.samples, cp.film_strata, stratum);
     if (lens_strata)
       PermutationElements((uint)first, n, cp.key.samples, cp.lens_strata, lens_stratum);
-    for (int k = 0; k < n; ++k)
-      batch[k] = GeneratePixelSampleIn(sd, &cp, (uint)(first + k), stratum[k], lens_stratum[k]);
+    uint prefix[RT_PERMUTATION_BATCH];
+    real point[4 * RT_PERMUTATION_BATCH];
+    CameraBatchPoints(sd, cp.key, (uint)first, stratum, lens_stratum, prefix, point);
+    for (int k = 0; k < n; ++k) {
+      const int b = RT_PERMUTATION_BATCH;
+      batch[k] =
+          CameraSampleOf(sd, &cp, (uint)(first + k), prefix[k], make_real2(point[k], point[b + k]),
+                         make_real2(point[2 * b + k], point[3 * b + k]));
+    }
 #else
     for (int k = 0; k < n; ++k) batch[k] = GeneratePixelSample(sd, &cp, (uint)(first + k));
 #endif

@@ -75,12 +75,18 @@ RT_DEVICE uint StratumRow(uint stratum, uint strata, uint magic) {
 #endif
 }
 
-RT_DEVICE real Random1D(SampleKey k, uint dimension) {
-  return UintToUnitFloat(HashCombine(k.prefix, dimension));
+// A sample's random number of `dimension`, from the sample's prefix (SampleKey.prefix).
+RT_DEVICE real RandomOfPrefix(uint prefix, uint dimension) {
+  return UintToUnitFloat(HashCombine(prefix, dimension));
 }
 
+// The second coordinate of a 2D dimension is drawn from this dimension.
+#define RT_DIM_SECOND(dimension) ((dimension) ^ 0x68bc21ebu)
+
+RT_DEVICE real Random1D(SampleKey k, uint dimension) { return RandomOfPrefix(k.prefix, dimension); }
+
 RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
-  return make_real2(Random1D(k, dimension), Random1D(k, dimension ^ 0x68bc21ebu));
+  return make_real2(Random1D(k, dimension), Random1D(k, RT_DIM_SECOND(dimension)));
 }
 
 // One point of a jittered n x n pattern per sample, in [0, 1)^2, its stratum permuted by
@@ -89,12 +95,16 @@ RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
 // ((0 + xi) * 1, exactly), so the permutation is skipped. StratumPoint2D is the point in
 // stratum `stratum` (the permutation element, made by the caller: cl/film.h makes a batch's
 // film and lens strata at once, PermutationElements).
-RT_DEVICE_INLINE real2 StratumPoint2D(SampleKey k, uint dimension, uint stratum) {
-  real2 xi = Random2D(k, dimension);
+// StratumPointOf is StratumPoint2D with the jitter xi = Random2D(k, dimension) given.
+RT_DEVICE_INLINE real2 StratumPointOf(SampleKey k, real2 xi, uint stratum) {
   if (k.strata <= 1u) return xi;
   real inv = 1.0f / (real)k.strata;
   uint row = StratumRow(stratum, k.strata, k.strata_magic);
   return make_real2(((real)(stratum - row * k.strata) + xi.x) * inv, ((real)row + xi.y) * inv);
+}
+
+RT_DEVICE_INLINE real2 StratumPoint2D(SampleKey k, uint dimension, uint stratum) {
+  return StratumPointOf(k, Random2D(k, dimension), stratum);
 }
 
 RT_DEVICE_INLINE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint stratum_key) {
@@ -154,15 +164,20 @@ RT_DEVICE void CacheCameraRaySamples(RT_PRIVATE PixelKey* p, uint which) {
     p->light_strata = StratumKey(p->hash, p->seed, RT_CAMERA_LIGHT_DIM, RT_STRATA_SALT_2D);
 }
 
-// Sample `sample` of the pixel; the prefix is Hash4(pixel, sample, seed, 0x3c6ef372u).
-RT_DEVICE SampleKey PixelSampleKey(PixelKey p, uint sample) {
+// The prefix of sample `sample` of the pixel: Hash4(pixel, sample, seed, 0x3c6ef372u).
+RT_DEVICE uint PixelSamplePrefix(PixelKey p, uint sample) {
+  return HashCombine(HashCombine(HashCombine(p.hash, sample), p.seed), 0x3c6ef372u);
+}
+
+// Sample `sample` of the pixel, whose prefix is PixelSamplePrefix(p, sample).
+RT_DEVICE SampleKey PixelSampleKeyOf(PixelKey p, uint sample, uint prefix) {
   SampleKey k;
   k.pixel_hash = p.hash;
   k.sample = sample;
   k.samples = p.samples;
   k.strata = p.strata;
   k.seed = p.seed;
-  k.prefix = HashCombine(HashCombine(HashCombine(p.hash, sample), p.seed), 0x3c6ef372u);
+  k.prefix = prefix;
   k.strata_magic = p.strata_magic;
   k.cached = p.cached;
   k.light_u = make_real2(0.0f, 0.0f);
@@ -171,6 +186,10 @@ RT_DEVICE SampleKey PixelSampleKey(PixelKey p, uint sample) {
   if ((p.cached & RT_CACHE_LIGHT) != 0u)
     k.light_u = Stratified2DKeyed(k, RT_CAMERA_LIGHT_DIM, p.light_strata);
   return k;
+}
+
+RT_DEVICE SampleKey PixelSampleKey(PixelKey p, uint sample) {
+  return PixelSampleKeyOf(p, sample, PixelSamplePrefix(p, sample));
 }
 
 RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint strata, uint seed) {
