@@ -145,18 +145,25 @@ RT_DEVICE int CameraFilmDrawn(RT_PRIVATE const SceneData* sd) {
 
 // Camera sample `sample` of a pixel, given its prefix (PixelSamplePrefix) and its film and
 // lens positions in [0, 1)^2 (GeneratePixelSample; cl/film.h makes a batch's at once,
-// CameraBatchPoints).
+// CameraBatchPoints). `ray`: null, or sample `k` of a batch's rays (CameraBatchRays).
 RT_DEVICE_INLINE CameraSample CameraSampleOf(RT_PRIVATE const SceneData* sd,
                                              RT_PRIVATE const CameraPixel* cp, uint sample,
-                                             uint prefix, real2 film, real2 lens) {
+                                             uint prefix, real2 film, real2 lens,
+                                             RT_PRIVATE const real* ray, int k) {
   CameraSample cs;
   cs.key = PixelSampleKeyOf(cp->key, sample, prefix);
   cs.film = film;
   real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR))
     time = Stratified1DKeyed(cs.key, RT_DIM_TIME, cp->time_strata);
-  cs.ray = GenerateCameraRay(sd, cp->course_pixel_size, (real)cp->x + film.x, (real)cp->y + film.y,
-                             lens, time);
+  if (ray) {
+    const int b = RT_PERMUTATION_BATCH;
+    cs.ray = MakeRay(make_real3(ray[k], ray[b + k], ray[2 * b + k]),
+                     make_real3(ray[3 * b + k], ray[4 * b + k], ray[5 * b + k]), RT_INFINITY, time);
+  } else {
+    cs.ray = GenerateCameraRay(sd, cp->course_pixel_size, (real)cp->x + film.x,
+                               (real)cp->y + film.y, lens, time);
+  }
   return cs;
 }
 
@@ -167,7 +174,86 @@ RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd
   real2 film = make_real2(0.5f, 0.5f), lens = make_real2(0.5f, 0.5f);
   if (CameraFilmDrawn(sd)) film = Stratified2DKeyed(k, RT_DIM_PIXEL, cp->film_strata);
   if (RT_CAMERA_LENS_DRAWN(sd)) lens = Stratified2DKeyed(k, RT_DIM_LENS, cp->lens_strata);
-  return CameraSampleOf(sd, cp, sample, prefix, film, lens);
+  return CameraSampleOf(sd, cp, sample, prefix, film, lens, 0, 0);
+}
+
+// Whether CameraBatchRays makes a batch's rays: the course camera's, through a pinhole or
+// the square lens (the disk lens's sines and the exact camera stay per sample).
+// The double build (--precision double) keeps them per sample: with them, GCC inlined its
+// traversal otherwise and warned of a field it cannot see is set (-Wmaybe-uninitialized).
+RT_DEVICE int CameraBatchRaysMade(RT_PRIVATE const SceneData* sd) {
+#ifdef RT_REAL_DOUBLE
+  return 0;
+#endif
+  RT_GLOBAL const Camera* cam = &sd->header->camera;
+  return (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0 &&
+         !(RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f &&
+           cam->lens == RT_LENS_DISK);
+}
+
+// GenerateCameraRay for a batch of film and lens positions (point, as CameraBatchPoints
+// makes them), where CameraBatchRaysMade: ray[B * c + k] is component c of sample k's
+// origin (c = 0..2) and direction (3..5). Each operation is GenerateCameraRay's, in its
+// order, on its operands, so each value is the same to the bit; as loops over the batch,
+// the compiler makes the two square roots and four divisions of each ray eight lanes wide,
+// where one ray's were a chain no other work overlapped.
+RT_DEVICE_INLINE void CameraBatchRays(RT_PRIVATE const SceneData* sd,
+                                      RT_PRIVATE const CameraPixel* cp,
+                                      RT_PRIVATE const real* point, RT_PRIVATE real* ray) {
+  RT_GLOBAL const Camera* cam = &sd->header->camera;
+  const int b = RT_PERMUTATION_BATCH;
+  real3 q = ToReal3(cam->course_q), u = ToReal3(cam->course_u), v = ToReal3(cam->course_v);
+  real3 eye = ToReal3(cam->course_eye), pos = ToReal3(cam->position);
+  real2 size = cp->course_pixel_size;
+  // The square roots are taken in a loop of their own: GCC keeps sqrt's errno check, which
+  // leaves a loop with one scalar, and the divisions are then eight lanes wide.
+  real len[RT_PERMUTATION_BATCH];
+  for (int k = 0; k < b; ++k) {  // CourseCameraDirection.
+    real su = size.x * ((real)cp->x + point[k]);
+    real sv = size.y * ((real)cp->y + point[b + k]);
+    real dx = (q.x + u.x * su - v.x * sv) - eye.x;
+    real dy = (q.y + u.y * su - v.y * sv) - eye.y;
+    real dz = (q.z + u.z * su - v.z * sv) - eye.z;
+    ray[k] = pos.x;
+    ray[b + k] = pos.y;
+    ray[2 * b + k] = pos.z;
+    ray[3 * b + k] = dx;
+    ray[4 * b + k] = dy;
+    ray[5 * b + k] = dz;
+    len[k] = dx * dx + dy * dy + dz * dz;
+  }
+  for (int k = 0; k < b; ++k) len[k] = sqrt(len[k]);
+  for (int k = 0; k < b; ++k) {
+    ray[3 * b + k] = ray[3 * b + k] / len[k];
+    ray[4 * b + k] = ray[4 * b + k] / len[k];
+    ray[5 * b + k] = ray[5 * b + k] / len[k];
+  }
+  if (!(RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f)) return;
+  real3 nw = -ToReal3(cam->w), cu = ToReal3(cam->u), cv = ToReal3(cam->v);
+  real aperture = cam->aperture, focus = cam->focus_distance;
+  for (int k = 0; k < b; ++k) {  // The thin lens, square.
+    real dx = ray[3 * b + k], dy = ray[4 * b + k], dz = ray[5 * b + k];
+    real tfocus = focus / (dx * nw.x + dy * nw.y + dz * nw.z);
+    real lx = point[2 * b + k] - 0.5f, ly = point[3 * b + k] - 0.5f;
+    real ox = (cu.x * lx + cv.x * ly) * aperture;
+    real oy = (cu.y * lx + cv.y * ly) * aperture;
+    real oz = (cu.z * lx + cv.z * ly) * aperture;
+    ray[k] = pos.x + ox;
+    ray[b + k] = pos.y + oy;
+    ray[2 * b + k] = pos.z + oz;
+    real tx = dx * tfocus - ox, ty = dy * tfocus - oy, tz = dz * tfocus - oz;
+    ray[3 * b + k] = tx;
+    ray[4 * b + k] = ty;
+    ray[5 * b + k] = tz;
+    len[k] = tx * tx + ty * ty + tz * tz;
+  }
+  for (int k = 0; k < b; ++k) len[k] = sqrt(len[k]);
+  for (int k = 0; k < b; ++k) {  // Normalize.
+    real inv = 1.0f / len[k];
+    ray[3 * b + k] = ray[3 * b + k] * inv;
+    ray[4 * b + k] = ray[4 * b + k] * inv;
+    ray[5 * b + k] = ray[5 * b + k] * inv;
+  }
 }
 
 // The stratified points (Stratified2DKeyed) of a batch: jitter xi[k], xi[B + k] in stratum

@@ -43,6 +43,7 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
   int lens_strata = RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cp.key.strata > 1u;
   uint stratum[RT_PERMUTATION_BATCH], lens_stratum[RT_PERMUTATION_BATCH];
   for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) stratum[k] = lens_stratum[k] = 0u;
+  int batch_rays = CameraBatchRaysMade(sd);
 #endif
   for (int first = begin; first < end; first += RT_CAMERA_BATCH) {
     int n = end - first < RT_CAMERA_BATCH ? end - first : RT_CAMERA_BATCH;
@@ -54,11 +55,13 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
     uint prefix[RT_PERMUTATION_BATCH];
     real point[4 * RT_PERMUTATION_BATCH];
     CameraBatchPoints(sd, cp.key, (uint)first, stratum, lens_stratum, prefix, point);
+    real ray[6 * RT_PERMUTATION_BATCH];
+    if (batch_rays) CameraBatchRays(sd, &cp, point, ray);
     for (int k = 0; k < n; ++k) {
       const int b = RT_PERMUTATION_BATCH;
       batch[k] =
           CameraSampleOf(sd, &cp, (uint)(first + k), prefix[k], make_real2(point[k], point[b + k]),
-                         make_real2(point[2 * b + k], point[3 * b + k]));
+                         make_real2(point[2 * b + k], point[3 * b + k]), batch_rays ? ray : 0, k);
     }
 #else
     for (int k = 0; k < n; ++k) batch[k] = GeneratePixelSample(sd, &cp, (uint)(first + k));
