@@ -143,15 +143,15 @@ RT_DEVICE int CameraFilmDrawn(RT_PRIVATE const SceneData* sd) {
 }
 #define RT_CAMERA_LENS_DRAWN(sd) RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)
 
-// Camera sample `sample` of a pixel, given its prefix (PixelSamplePrefix) and its film and
-// lens positions in [0, 1)^2 (GeneratePixelSample; cl/film.h makes a batch's at once,
+// The camera sample of key `key` (PixelSampleKeyOf) of a pixel, given its film and lens
+// positions in [0, 1)^2 (GeneratePixelSample; cl/film.h makes a batch's at once,
 // CameraBatchPoints). `ray`: null, or sample `k` of a batch's rays (CameraBatchRays).
 RT_DEVICE_INLINE CameraSample CameraSampleOf(RT_PRIVATE const SceneData* sd,
-                                             RT_PRIVATE const CameraPixel* cp, uint sample,
-                                             uint prefix, real2 film, real2 lens,
-                                             RT_PRIVATE const real* ray, int k) {
+                                             RT_PRIVATE const CameraPixel* cp, SampleKey key,
+                                             real2 film, real2 lens, RT_PRIVATE const real* ray,
+                                             int k) {
   CameraSample cs;
-  cs.key = PixelSampleKeyOf(cp->key, sample, prefix);
+  cs.key = key;
   cs.film = film;
   real time = 0.0f;
   if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR))
@@ -167,14 +167,20 @@ RT_DEVICE_INLINE CameraSample CameraSampleOf(RT_PRIVATE const SceneData* sd,
   return cs;
 }
 
+// The kernel's camera sample, one at a time: the strata first, off the key's chain, as
+// before the CPU reference made its samples a batch at a time.
 RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
                                                   RT_PRIVATE const CameraPixel* cp, uint sample) {
-  uint prefix = PixelSamplePrefix(cp->key, sample);
-  SampleKey k = PixelSampleKeyOf(cp->key, sample, prefix);
+  uint film_stratum = 0u, lens_stratum = 0u;
+  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cp->key.strata > 1u)
+    film_stratum = PermutationElement(sample, cp->key.samples, cp->film_strata);
+  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cp->key.strata > 1u)
+    lens_stratum = PermutationElement(sample, cp->key.samples, cp->lens_strata);
+  SampleKey k = PixelSampleKey(cp->key, sample);
   real2 film = make_real2(0.5f, 0.5f), lens = make_real2(0.5f, 0.5f);
-  if (CameraFilmDrawn(sd)) film = Stratified2DKeyed(k, RT_DIM_PIXEL, cp->film_strata);
-  if (RT_CAMERA_LENS_DRAWN(sd)) lens = Stratified2DKeyed(k, RT_DIM_LENS, cp->lens_strata);
-  return CameraSampleOf(sd, cp, sample, prefix, film, lens, 0, 0);
+  if (CameraFilmDrawn(sd)) film = StratumPoint2D(k, RT_DIM_PIXEL, film_stratum);
+  if (RT_CAMERA_LENS_DRAWN(sd)) lens = StratumPoint2D(k, RT_DIM_LENS, lens_stratum);
+  return CameraSampleOf(sd, cp, k, film, lens, 0, 0);
 }
 
 // Whether CameraBatchRays makes a batch's rays: the course camera's, through a pinhole or

@@ -60,7 +60,8 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
     for (int k = 0; k < n; ++k) {
       const int b = RT_PERMUTATION_BATCH;
       batch[k] =
-          CameraSampleOf(sd, &cp, (uint)(first + k), prefix[k], make_real2(point[k], point[b + k]),
+          CameraSampleOf(sd, &cp, PixelSampleKeyOf(cp.key, (uint)(first + k), prefix[k]),
+                         make_real2(point[k], point[b + k]),
                          make_real2(point[2 * b + k], point[3 * b + k]), batch_rays ? ray : 0, k);
     }
 #else

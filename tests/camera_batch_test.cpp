@@ -96,9 +96,10 @@ TEST(CameraBatch, MakesTheSamplesOfTheOneAtATimePath) {
             if (batch_rays) CameraBatchRays(&sd, &cp, point, ray);
             for (int k = 0; k < n; ++k) {
               const uint s = static_cast<uint>(first + k);
-              CameraSample batch = CameraSampleOf(
-                  &sd, &cp, s, prefix[k], make_real2(point[k], point[b + k]),
-                  make_real2(point[2 * b + k], point[3 * b + k]), batch_rays ? ray : nullptr, k);
+              CameraSample batch = CameraSampleOf(&sd, &cp, PixelSampleKeyOf(cp.key, s, prefix[k]),
+                                                  make_real2(point[k], point[b + k]),
+                                                  make_real2(point[2 * b + k], point[3 * b + k]),
+                                                  batch_rays ? ray : nullptr, k);
               ExpectSameSample(batch, GeneratePixelSample(&sd, &cp, s),
                                ("samples " + std::to_string(c.samples) + " features " +
                                 std::to_string(c.features) + " course " + std::to_string(c.course) +
