@@ -108,8 +108,13 @@ for name in $scene_names; do
   tris=$("$build/raytracer" "$cam" --spp 1 --quiet --stats --output-dir "$work" --device cpu 2>&1 |
          grep -o '[0-9]* triangles' | head -1 | awk '{print $1}')
   pixels=$(grep -o '<ImageResolution>[0-9 ]*' "$scene" | head -1 | awk -F'>' '{split($2, r, " "); print r[1] * r[2]}')
+  # The kernel caches: a kernel is built for the scene's features, and more than one sample
+  # per pixel adds one, so the spp run needs its own (a tenth of the image is enough).
   for dev in $devices; do
-    for b in "${builds[@]}"; do measure "$b" "$cam" "$dev" 1 > /dev/null; done  # Kernel cache.
+    for b in "${builds[@]}"; do
+      measure "$b" "$cam" "$dev" 1 > /dev/null
+      measure "$b" "$cam" "$dev" "$spp" --resolution-scale 0.1 > /dev/null
+    done
   done
   declare -A rate=() bvh=() mem=()
   for ((i = 0; i < reps; i++)); do
