@@ -1,13 +1,19 @@
 #!/bin/bash
 # Benchmark of ray tracing speed: camera rays per CPU-second (lights removed, recursion
 # depth 0, one ray per sample), BVH build time and peak memory, on tap_0200 and generated
-# bumpy planes of 1 M and 4 M triangles, on both devices. With --baseline, a second build
-# runs interleaved with the first (A B A B) and the table gets its figures and the ratio.
+# bumpy planes of 1 M and 4 M triangles, on both devices. Each repetition runs every device
+# (and, with --baseline, a second build) once, interleaved (A B A B), so a change of the
+# machine's speed between repetitions moves all of one repetition's figures together: each
+# table row has its median and range, and a second table gives the ratios paired within a
+# repetition (new / baseline per device; OpenCL / CPU reference per build), median and range.
 #
 # usage: bench/trace_bench.sh [--build DIR] [--baseline DIR] [--reps N] [--spp N]
 #                             [--scenes "tap 1M 4M"] [--devices "cpu cl"] [--build-scenes "4M"]
+#                             [--no-embree]
 # Camera-ray rate = (spp - 1) * pixels / (CPU-s at spp - CPU-s at 1 spp): the difference
-# cancels loading, BVH build, kernel compile and upload, leaving the tracing alone.
+# cancels loading, BVH build, kernel compile and upload, leaving the tracing alone. The
+# default 33 spp makes the traced part ~4x the fixed one (CPU-s 4.5 against 1.0 on tap_0200):
+# at 9 spp the two were alike and the 1 spp run's own noise moved the rate by ~10 %.
 # Where the build has embree_bench (Debian's libembree-dev installed), two more tables: the
 # same camera rays traced by Embree 3 (single rays and 16-ray packets) beside ours, and the
 # BVH build time of the --build-scenes against Embree's HIGH build at 1 and 2 threads.
@@ -15,11 +21,12 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="$here/build"
 baseline=""
-reps=3
-spp=9
+reps=5
+spp=33
 scene_names="tap 1M 4M"
 devices="cpu cl"
 build_scenes="4M"
+no_embree=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) build="$(cd "$2" && pwd)"; shift 2 ;;
@@ -29,6 +36,7 @@ while [ $# -gt 0 ]; do
     --scenes) scene_names="$2"; shift 2 ;;
     --devices) devices="$2"; shift 2 ;;
     --build-scenes) build_scenes="$2"; shift 2 ;;
+    --no-embree) no_embree=1; shift ;;
     *) echo "trace_bench.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -73,16 +81,24 @@ measure() {  # BUILD SCENE DEVICE SPP [RAYTRACER FLAGS...]
 }
 
 median() { sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+# "median min max" of the numbers in $1 (space-separated).
+spread() { echo $1 | tr ' ' '\n' | sort -g | awk '{a[NR]=$1} END {
+  printf "%.3f %.3f %.3f\n", (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2, a[1], a[NR]}'; }
+# The element-wise ratios of two equally long lists: $1[i] / $2[i].
+ratios() { paste <(echo $1 | tr ' ' '\n') <(echo $2 | tr ' ' '\n') |
+  awk '{printf "%s ", ($2 > 0) ? $1 / $2 : 0}'; }
 
 builds=("$build")
 [ -n "$baseline" ] && builds+=("$baseline")
 echo "camera rays (no lights, depth 0), ${spp} vs 1 spp, $reps interleaved repetitions, medians"
 echo "OpenCL device: $("$build/raytracer" --list-devices 2>/dev/null | head -1)"
+echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
-echo "| scene | triangles | device | build | Mrays/CPU-s | BVH build ms | peak MiB (1 spp) |"
-echo "|---|---:|---|---|---:|---:|---:|"
+echo "| scene | triangles | device | build | Mrays/CPU-s | range | BVH build ms | peak MiB (1 spp) |"
+echo "|---|---:|---|---|---:|---|---:|---:|"
+ratio_rows=()
 embree="$build/embree_bench"
-[ -x "$embree" ] || embree=""
+[ -x "$embree" ] && [ -z "$no_embree" ] || embree=""
 embree_rows=()
 build_rows=()
 for name in $scene_names; do
@@ -92,29 +108,49 @@ for name in $scene_names; do
   tris=$("$build/raytracer" "$cam" --spp 1 --quiet --stats --output-dir "$work" --device cpu 2>&1 |
          grep -o '[0-9]* triangles' | head -1 | awk '{print $1}')
   pixels=$(grep -o '<ImageResolution>[0-9 ]*' "$scene" | head -1 | awk -F'>' '{split($2, r, " "); print r[1] * r[2]}')
+  # The kernel caches: a kernel is built for the scene's features, and more than one sample
+  # per pixel adds one, so the spp run needs its own (a tenth of the image is enough).
   for dev in $devices; do
-    for b in "${builds[@]}"; do measure "$b" "$cam" "$dev" 1 > /dev/null; done  # Kernel cache.
-    declare -A rate=() bvh=() mem=()
-    for ((i = 0; i < reps; i++)); do
+    for b in "${builds[@]}"; do
+      measure "$b" "$cam" "$dev" 1 > /dev/null
+      measure "$b" "$cam" "$dev" "$spp" --resolution-scale 0.1 > /dev/null
+    done
+  done
+  declare -A rate=() bvh=() mem=()
+  for ((i = 0; i < reps; i++)); do
+    for dev in $devices; do
       for b in "${builds[@]}"; do
         read -r c1 m1 b1 < <(measure "$b" "$cam" "$dev" 1)
         read -r cn mn bn < <(measure "$b" "$cam" "$dev" "$spp")
-        rate[$b]+="$(awk -v a="$c1" -v b="$cn" -v r="$(( (spp - 1) * pixels ))" \
-                     'BEGIN {print (b > a) ? r / (b - a) * 1e-6 : 0}') "
-        bvh[$b]+="$b1 "
-        mem[$b]+="$m1 "
+        rate["$dev $b"]+="$(awk -v a="$c1" -v b="$cn" -v r="$(( (spp - 1) * pixels ))" \
+                           'BEGIN {print (b > a) ? r / (b - a) * 1e-6 : 0}') "
+        bvh["$dev $b"]+="$b1 "
+        mem["$dev $b"]+="$m1 "
       done
     done
+  done
+  for dev in $devices; do
     for b in "${builds[@]}"; do
       label=$([ "$b" = "$build" ] && echo new || echo baseline)
-      r="$(echo ${rate[$b]} | tr ' ' '\n' | median)"
+      read -r r lo hi < <(spread "${rate["$dev $b"]}")
       [ "$b" = "$build" ] && [ "$dev" = cpu ] && renderer_rate="$r"
-      printf '| %s | %s | %s | %s | %.2f | %.0f | %.0f |\n' "$name" "$tris" "$dev" "$label" "$r" \
-        "$(echo ${bvh[$b]} | tr ' ' '\n' | median)" \
-        "$(echo ${mem[$b]} | tr ' ' '\n' | median | awk '{print $1 / 1024}')"
+      printf '| %s | %s | %s | %s | %.2f | %.2f-%.2f | %.0f | %.0f |\n' "$name" "$tris" "$dev" \
+        "$label" "$r" "$lo" "$hi" "$(echo ${bvh["$dev $b"]} | tr ' ' '\n' | median)" \
+        "$(echo ${mem["$dev $b"]} | tr ' ' '\n' | median | awk '{print $1 / 1024}')"
     done
-    unset rate bvh mem
+    if [ -n "$baseline" ]; then
+      read -r r lo hi < <(spread "$(ratios "${rate["$dev $build"]}" "${rate["$dev $baseline"]}")")
+      ratio_rows+=("$(printf '| %s | %s: new / baseline | %.2f | %.2f-%.2f |' "$name" "$dev" "$r" "$lo" "$hi")")
+    fi
   done
+  if [[ " $devices " == *" cpu "* && " $devices " == *" cl "* ]]; then
+    for b in "${builds[@]}"; do
+      label=$([ "$b" = "$build" ] && echo new || echo baseline)
+      read -r r lo hi < <(spread "$(ratios "${rate["cl $b"]}" "${rate["cpu $b"]}")")
+      ratio_rows+=("$(printf '| %s | %s: OpenCL / CPU reference | %.2f | %.2f-%.2f |' "$name" "$label" "$r" "$lo" "$hi")")
+    done
+  fi
+  unset rate bvh mem
   if [ -n "$embree" ]; then
     # The renderer again on one thread, as Embree's figures are taken: two threads on this
     # kind of VM share a core's resources, which lowers the rate per CPU-second of each.
@@ -143,6 +179,15 @@ for name in $scene_names; do
     unset renderer_rate
   fi
 done
+echo "load average at end: $(cut -d' ' -f1-3 /proc/loadavg)"
+if [ ${#ratio_rows[@]} -gt 0 ]; then
+  echo
+  echo "Ratios of the camera-ray rates, paired within each repetition: median and range."
+  echo
+  echo "| scene | ratio | median | range |"
+  echo "|---|---|---:|---|"
+  printf '%s\n' "${ratio_rows[@]}"
+fi
 if [ -n "$embree" ]; then
   echo
   echo "The same camera rays traced by Embree 3 (BVH quality HIGH, no culling), Mrays per"
@@ -166,5 +211,6 @@ if [ -n "$embree" ]; then
   fi
 else
   echo
-  echo "(no Embree columns: build/embree_bench is built only where libembree-dev is installed)"
+  [ -n "$no_embree" ] ||
+    echo "(no Embree columns: build/embree_bench is built only where libembree-dev is installed)"
 fi

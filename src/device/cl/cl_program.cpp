@@ -57,6 +57,7 @@ ClProgramCache::ClProgramCache(const cl::Context& context, const cl::Device& dev
   correctly_rounded_ = (fp & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) != 0;
   fp64_ = (" " + device_.getInfo<CL_DEVICE_EXTENSIONS>() + " ").find(" cl_khr_fp64 ") !=
           std::string::npos;
+  cpu_ = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
 }
 
 void check_precision_support(const std::string& device_name, bool has_fp64, bool double_precision) {
@@ -70,6 +71,8 @@ std::string ClProgramCache::options_for(int features, bool fast_math, bool doubl
   check_precision_support(name_, fp64_, double_precision);
   std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
   if (double_precision) o += " -DRT_REAL_DOUBLE=1";
+  // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/film.h).
+  if (cpu_) o += " -DRT_CL_CPU_DEVICE=1";
   if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
   // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).
   if (const char* extra = std::getenv("RT_CL_OPTIONS")) o += std::string(" ") + extra;

@@ -23,7 +23,7 @@ class ClProgramCache {
  public:
   ClProgramCache(const cl::Context& context, const cl::Device& device, bool use_disk_cache);
   // The build options for a feature set: the defines, exact division and square root when
-  // the device offers them, `fast_math`, RT_REAL_DOUBLE for `double_precision` (which
+  // the device offers them, RT_CL_CPU_DEVICE on a CPU device, `fast_math`, RT_REAL_DOUBLE for `double_precision` (which
   // throws, naming the device, when it lacks cl_khr_fp64), and RT_CL_OPTIONS (a
   // developer's knob). The options key both the in-memory and the on-disk cache.
   std::string options_for(int features, bool fast_math, bool double_precision) const;
@@ -43,6 +43,7 @@ class ClProgramCache {
   bool use_disk_cache_;
   bool correctly_rounded_ = false;
   bool fp64_ = false;  // The device reports cl_khr_fp64.
+  bool cpu_ = false;   // The device is a CPU (PoCL's pthread device, say).
   std::map<std::string, ClProgram> programs_;
 };
 
