@@ -5,6 +5,9 @@
 #   tools/pixel_hashes.sh BUILD_A quick > a.txt; tools/pixel_hashes.sh BUILD_B quick > b.txt
 #   diff a.txt b.txt
 # quick: a quarter of each resolution at 4 samples per pixel (about a minute);
+# own:   a tenth of each resolution at the scene's own sample count (up to 900 samples per
+#        pixel, where the stratum permutations walk cycles that 4 samples never reach; a
+#        few minutes);
 # full:  every scene at its own resolution and sample count.
 # Scenes whose files are missing in ../shared are listed as "missing".
 # Moments files record the scene's path: checkouts beside the same shared/ folder agree on
@@ -14,7 +17,7 @@
 #   RT_PIXEL_FLAGS="--quantize round" tools/pixel_hashes.sh build quick > b.txt
 set -uo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
-build="$(cd "${1:?usage: pixel_hashes.sh BUILD_DIR quick|full [device...]}" && pwd)"
+build="$(cd "${1:?usage: pixel_hashes.sh BUILD_DIR quick|own|full [device...]}" && pwd)"
 mode="${2:-quick}"
 shift 2 || shift $#
 devices=("$@")
@@ -23,7 +26,12 @@ devices=("$@")
 # the same shared/ folder hash equal moments only if they name it alike.
 shared="$(cd "$here/../shared/scenes" 2>/dev/null && pwd -P || echo "$here/../shared/scenes")"
 size=()
-[ "$mode" = quick ] && size=(--resolution-scale 0.25 --spp 4)
+case "$mode" in
+  quick) size=(--resolution-scale 0.25 --spp 4) ;;
+  own) size=(--resolution-scale 0.1) ;;
+  full) ;;
+  *) echo "pixel_hashes.sh: mode must be quick, own or full, not '$mode'" >&2; exit 2 ;;
+esac
 # shellcheck disable=SC2206
 size+=(${RT_PIXEL_FLAGS:-})
 work="$(mktemp -d)"
