@@ -20,8 +20,10 @@ RT_DEVICE int ReflectionLeavesBelow(RT_PRIVATE const SceneData* sd,
 }
 
 // The reflected direction at s (facing the incoming ray), perturbed by the roughness.
-RT_DEVICE real3 MirrorDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                                RT_PRIVATE const SurfacePoint* s, RaySampler rs) {
+// PoCL kept it out of line (conductors and dielectrics both call it), a call that copied
+// the sampler: metal_glass_plates 3.7 % fewer instructions inlined.
+RT_KERNEL_INLINE real3 MirrorDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                                       RT_PRIVATE const SurfacePoint* s, RaySampler rs) {
   return GlossyDirection(sd, m, Reflect(s->wo, s->n), rs);
 }
 
