@@ -38,12 +38,21 @@ RT_DEVICE real2 CourseFilmPixelSize(RT_GLOBAL const Camera* cam) {
 // rays and 212 with these (README, "Figures"). Each operation and its order is the one that
 // matched (su from the pixel width, s summed left to right, d divided by its length).
 // `pixel_size` is CourseFilmPixelSize(cam).
+// CourseFilmAxis is one axis of s - e, so the CPU reference's camera batch
+// (cl/camera_batch.h) forms it lane by lane with the same operations.
+RT_DEVICE real CourseFilmAxis(real q, real u, real v, real eye, real su, real sv) {
+  return (q + u * su - v * sv) - eye;
+}
+
 RT_DEVICE real3 CourseCameraDirection(RT_GLOBAL const Camera* cam, real2 pixel_size, real px,
                                       real py) {
   real su = pixel_size.x * px;
   real sv = pixel_size.y * py;
-  real3 s = ToReal3(cam->course_q) + ToReal3(cam->course_u) * su - ToReal3(cam->course_v) * sv;
-  real3 d = s - ToReal3(cam->course_eye);
+  real3 q = ToReal3(cam->course_q), u = ToReal3(cam->course_u), v = ToReal3(cam->course_v);
+  real3 e = ToReal3(cam->course_eye);
+  real3 d = make_real3(CourseFilmAxis(q.x, u.x, v.x, e.x, su, sv),
+                       CourseFilmAxis(q.y, u.y, v.y, e.y, su, sv),
+                       CourseFilmAxis(q.z, u.z, v.z, e.z, su, sv));
   real len = Length(d);
   return make_real3(d.x / len, d.y / len, d.z / len);
 }
@@ -57,6 +66,12 @@ RT_DEVICE real3 ExactCameraDirection(RT_GLOBAL const Camera* cam, real px, real 
   real3 film = ToReal3(cam->u) * (cam->left + su) + ToReal3(cam->v) * (cam->top - sv) -
                ToReal3(cam->w) * cam->near_distance;
   return Normalize(film);
+}
+
+// One axis of the thin lens's offset from the camera's position for the lens point l
+// (centred on the lens): (u l.x + v l.y) aperture; per axis, as for CourseFilmAxis.
+RT_DEVICE real LensOffsetAxis(real u, real v, real2 l, real aperture) {
+  return (u * l.x + v * l.y) * aperture;
 }
 
 // The ray through film position (px, py) in pixels (x right, y down) at shutter time
@@ -78,7 +93,10 @@ RT_DEVICE Ray GenerateCameraRay(RT_PRIVATE const SceneData* sd, real2 course_pix
       real2 disk = SampleConcentricDisk(lens);
       l = make_real2(0.5f * disk.x, 0.5f * disk.y);
     }
-    real3 lens_offset = (ToReal3(cam->u) * l.x + ToReal3(cam->v) * l.y) * cam->aperture;
+    real3 u = ToReal3(cam->u), v = ToReal3(cam->v);
+    real3 lens_offset = make_real3(LensOffsetAxis(u.x, v.x, l, cam->aperture),
+                                   LensOffsetAxis(u.y, v.y, l, cam->aperture),
+                                   LensOffsetAxis(u.z, v.z, l, cam->aperture));
     ray.origin = ToReal3(cam->position) + lens_offset;
     ray.direction = Normalize(dir * tfocus - lens_offset);
   }
@@ -181,140 +199,6 @@ RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd
   if (CameraFilmDrawn(sd)) film = StratumPoint2D(k, RT_DIM_PIXEL, film_stratum);
   if (RT_CAMERA_LENS_DRAWN(sd)) lens = StratumPoint2D(k, RT_DIM_LENS, lens_stratum);
   return CameraSampleOf(sd, cp, k, film, lens, 0, 0);
-}
-
-// Whether CameraBatchRays makes a batch's rays: the course camera's, through a pinhole or
-// the square lens (the disk lens's sines and the exact camera stay per sample).
-// The double build (--precision double) keeps them per sample: with them, GCC inlined its
-// traversal otherwise and warned of a field it cannot see is set (-Wmaybe-uninitialized).
-RT_DEVICE int CameraBatchRaysMade(RT_PRIVATE const SceneData* sd) {
-#ifdef RT_REAL_DOUBLE
-  return 0;
-#endif
-  RT_GLOBAL const Camera* cam = &sd->header->camera;
-  return (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0 &&
-         !(RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f &&
-           cam->lens == RT_LENS_DISK);
-}
-
-// GenerateCameraRay for a batch of film and lens positions (point, as CameraBatchPoints
-// makes them), where CameraBatchRaysMade: ray[B * c + k] is component c of sample k's
-// origin (c = 0..2) and direction (3..5). Each operation is GenerateCameraRay's, in its
-// order, on its operands, so each value is the same to the bit; as loops over the batch,
-// the compiler makes the two square roots and four divisions of each ray eight lanes wide,
-// where one ray's were a chain no other work overlapped.
-RT_DEVICE_INLINE void CameraBatchRays(RT_PRIVATE const SceneData* sd,
-                                      RT_PRIVATE const CameraPixel* cp,
-                                      RT_PRIVATE const real* point, RT_PRIVATE real* ray) {
-  RT_GLOBAL const Camera* cam = &sd->header->camera;
-  const int b = RT_PERMUTATION_BATCH;
-  real3 q = ToReal3(cam->course_q), u = ToReal3(cam->course_u), v = ToReal3(cam->course_v);
-  real3 eye = ToReal3(cam->course_eye), pos = ToReal3(cam->position);
-  real2 size = cp->course_pixel_size;
-  // The square roots are taken in a loop of their own: GCC keeps sqrt's errno check, which
-  // leaves a loop with one scalar, and the divisions are then eight lanes wide.
-  real len[RT_PERMUTATION_BATCH];
-  for (int k = 0; k < b; ++k) {  // CourseCameraDirection.
-    real su = size.x * ((real)cp->x + point[k]);
-    real sv = size.y * ((real)cp->y + point[b + k]);
-    real dx = (q.x + u.x * su - v.x * sv) - eye.x;
-    real dy = (q.y + u.y * su - v.y * sv) - eye.y;
-    real dz = (q.z + u.z * su - v.z * sv) - eye.z;
-    ray[k] = pos.x;
-    ray[b + k] = pos.y;
-    ray[2 * b + k] = pos.z;
-    ray[3 * b + k] = dx;
-    ray[4 * b + k] = dy;
-    ray[5 * b + k] = dz;
-    len[k] = dx * dx + dy * dy + dz * dz;
-  }
-  for (int k = 0; k < b; ++k) len[k] = sqrt(len[k]);
-  for (int k = 0; k < b; ++k) {
-    ray[3 * b + k] = ray[3 * b + k] / len[k];
-    ray[4 * b + k] = ray[4 * b + k] / len[k];
-    ray[5 * b + k] = ray[5 * b + k] / len[k];
-  }
-  if (!(RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f)) return;
-  real3 nw = -ToReal3(cam->w), cu = ToReal3(cam->u), cv = ToReal3(cam->v);
-  real aperture = cam->aperture, focus = cam->focus_distance;
-  for (int k = 0; k < b; ++k) {  // The thin lens, square.
-    real dx = ray[3 * b + k], dy = ray[4 * b + k], dz = ray[5 * b + k];
-    real tfocus = focus / (dx * nw.x + dy * nw.y + dz * nw.z);
-    real lx = point[2 * b + k] - 0.5f, ly = point[3 * b + k] - 0.5f;
-    real ox = (cu.x * lx + cv.x * ly) * aperture;
-    real oy = (cu.y * lx + cv.y * ly) * aperture;
-    real oz = (cu.z * lx + cv.z * ly) * aperture;
-    ray[k] = pos.x + ox;
-    ray[b + k] = pos.y + oy;
-    ray[2 * b + k] = pos.z + oz;
-    real tx = dx * tfocus - ox, ty = dy * tfocus - oy, tz = dz * tfocus - oz;
-    ray[3 * b + k] = tx;
-    ray[4 * b + k] = ty;
-    ray[5 * b + k] = tz;
-    len[k] = tx * tx + ty * ty + tz * tz;
-  }
-  for (int k = 0; k < b; ++k) len[k] = sqrt(len[k]);
-  for (int k = 0; k < b; ++k) {  // Normalize.
-    real inv = 1.0f / len[k];
-    ray[3 * b + k] = ray[3 * b + k] * inv;
-    ray[4 * b + k] = ray[4 * b + k] * inv;
-    ray[5 * b + k] = ray[5 * b + k] * inv;
-  }
-}
-
-// The stratified points (Stratified2DKeyed) of a batch: jitter xi[k], xi[B + k] in stratum
-// stratum[k] of the pixel's pattern, into out[k], out[B + k] (B = RT_PERMUTATION_BATCH).
-RT_DEVICE_INLINE void BatchStratumPoints(PixelKey p, RT_PRIVATE const uint* stratum,
-                                         RT_PRIVATE real* xi, RT_PRIVATE real* out) {
-  if (p.strata <= 1u) {
-    for (int k = 0; k < 2 * RT_PERMUTATION_BATCH; ++k) out[k] = xi[k];
-    return;
-  }
-  real inv = 1.0f / (real)p.strata;
-  uint row[RT_PERMUTATION_BATCH];
-  // Two loops, so the magic multiply's is vectorized: with the division as its alternative
-  // (StratumRow), GCC left it scalar.
-  if (p.strata_magic != 0u) {
-    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k)
-      row[k] = StratumRow(stratum[k], p.strata, p.strata_magic);
-  } else {
-    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) row[k] = stratum[k] / p.strata;
-  }
-  for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
-    // The stratum indices are below 2^31, so converting them as ints gives StratumPointOf's
-    // floats.
-    out[k] = ((real)(int)(stratum[k] - row[k] * p.strata) + xi[k]) * inv;
-    out[RT_PERMUTATION_BATCH + k] = ((real)(int)row[k] + xi[RT_PERMUTATION_BATCH + k]) * inv;
-  }
-}
-
-// The prefixes and film and lens positions of samples first .. first + B - 1 of the pixel
-// (B = RT_PERMUTATION_BATCH), as GeneratePixelSample makes them, for the CPU reference's
-// camera batch (cl/film.h): prefix[k], film (point[k], point[B + k]), lens (point[2B + k],
-// point[3B + k]); film_stratum and lens_stratum as PermutationElements makes them. A
-// sample's prefix and jitters are seven hash rounds, one sample's a chain of scalar
-// multiplies and shifts: as loops over the batch, the compiler makes each eight lanes wide.
-RT_DEVICE_INLINE void CameraBatchPoints(RT_PRIVATE const SceneData* sd, PixelKey p, uint first,
-                                        RT_PRIVATE const uint* film_stratum,
-                                        RT_PRIVATE const uint* lens_stratum,
-                                        RT_PRIVATE uint* prefix, RT_PRIVATE real* point) {
-  for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) prefix[k] = PixelSamplePrefix(p, first + (uint)k);
-  real xi[2 * RT_PERMUTATION_BATCH];
-  for (int k = 0; k < 4 * RT_PERMUTATION_BATCH; ++k) point[k] = 0.5f;
-  if (CameraFilmDrawn(sd)) {
-    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
-      xi[k] = RandomOfPrefix(prefix[k], RT_DIM_PIXEL);
-      xi[RT_PERMUTATION_BATCH + k] = RandomOfPrefix(prefix[k], RT_DIM_SECOND(RT_DIM_PIXEL));
-    }
-    BatchStratumPoints(p, film_stratum, xi, point);
-  }
-  if (RT_CAMERA_LENS_DRAWN(sd)) {
-    for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
-      xi[k] = RandomOfPrefix(prefix[k], RT_DIM_LENS);
-      xi[RT_PERMUTATION_BATCH + k] = RandomOfPrefix(prefix[k], RT_DIM_SECOND(RT_DIM_LENS));
-    }
-    BatchStratumPoints(p, lens_stratum, xi, point + 2 * RT_PERMUTATION_BATCH);
-  }
 }
 
 RT_DEVICE CameraSample GenerateCameraSample(RT_PRIVATE const SceneData* sd, int x, int y,

@@ -4,6 +4,7 @@
 #define RT_FILM_H
 
 #include "film_types.h"
+#include "camera_batch.h"
 #include "integrator/integrator.h"
 
 RT_DEVICE float4 AddFloat4(float4 a, real3 v, real w) {

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <vector>
 
-#include "cl/camera.h"
+#include "cl/camera_batch.h"
 
 namespace {
 
