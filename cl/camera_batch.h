@@ -1,8 +1,9 @@
-// The CPU reference's camera batch (cl/film.h, RT_CAMERA_BATCH): the keys, film and lens
-// positions and course-camera rays of RT_PERMUTATION_BATCH samples of a pixel, made as loops
-// over the batch that the compiler makes eight lanes wide. Each value is the one the
-// one-at-a-time path (GeneratePixelSample, cl/camera.h) makes, to the bit: the loops call
-// that path's per-axis steps (CourseFilmAxis, LensOffsetAxis, StratumRow) in its order
+// The camera batch of a CPU device, the reference's or an OpenCL CPU device's (cl/film.h,
+// RT_CAMERA_BATCH): the keys, film and lens positions and course-camera rays of
+// RT_PERMUTATION_BATCH samples of a pixel, made as loops over the batch that GCC makes
+// eight lanes wide (PoCL keeps them scalar; the batch still overlaps the samples' chains). Each
+// value is the one the one-at-a-time path (GeneratePixelSample, cl/camera.h) makes, to the bit: the
+// loops call that path's per-axis steps (CourseFilmAxis, LensOffsetAxis, StratumRow) in its order
 // (tests/camera_batch_test.cpp).
 #ifndef RT_CAMERA_BATCH_H
 #define RT_CAMERA_BATCH_H
@@ -15,12 +16,16 @@
 // traversal otherwise and warned of a field it cannot see is set (-Wmaybe-uninitialized).
 RT_DEVICE int CameraBatchRaysMade(RT_PRIVATE const SceneData* sd) {
 #ifdef RT_REAL_DOUBLE
+  (void)sd;
   return 0;
-#endif
+#else
   RT_GLOBAL const Camera* cam = &sd->header->camera;
-  return (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0 &&
-         !(RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f &&
-           cam->lens == RT_LENS_DISK);
+  // The disk lens's test first: where the kernel is built without depth of field, RT_HAS is
+  // a constant 0, and clang warns of a constant right operand of &&.
+  return !(RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cam->aperture > 0.0f &&
+           cam->lens == RT_LENS_DISK) &&
+         (sd->header->flags & RT_FLAG_COURSE_CAMERA) != 0;
+#endif
 }
 
 // GenerateCameraRay for a batch of film and lens positions (point, as CameraBatchPoints
@@ -115,7 +120,7 @@ RT_DEVICE_INLINE void BatchStratumPoints(PixelKey p, RT_PRIVATE const uint* stra
 }
 
 // The prefixes and film and lens positions of samples first .. first + B - 1 of the pixel
-// (B = RT_PERMUTATION_BATCH), as GeneratePixelSample makes them, for the CPU reference's
+// (B = RT_PERMUTATION_BATCH), as GeneratePixelSample makes them, for a CPU device's
 // camera batch (cl/film.h): prefix[k], film (point[k], point[B + k]), lens (point[2B + k],
 // point[3B + k]); film_stratum and lens_stratum as PermutationElements makes them. A
 // sample's prefix and jitters are seven hash rounds, one sample's a chain of scalar
