@@ -112,10 +112,9 @@ RT_DEVICE_INLINE void BatchStratumPoints(PixelKey p, RT_PRIVATE const uint* stra
     for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) row[k] = stratum[k] / p.strata;
   }
   for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) {
-    // The stratum indices are below 2^31, so converting them as ints gives StratumPointOf's
-    // floats.
-    out[k] = ((real)(int)(stratum[k] - row[k] * p.strata) + xi[k]) * inv;
-    out[RT_PERMUTATION_BATCH + k] = ((real)(int)row[k] + xi[RT_PERMUTATION_BATCH + k]) * inv;
+    out[k] = StratumCoordinate((int)(stratum[k] - row[k] * p.strata), xi[k], inv);
+    out[RT_PERMUTATION_BATCH + k] =
+        StratumCoordinate((int)row[k], xi[RT_PERMUTATION_BATCH + k], inv);
   }
 }
 

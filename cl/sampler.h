@@ -95,12 +95,19 @@ RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
 // ((0 + xi) * 1, exactly), so the permutation is skipped. StratumPoint2D is the point in
 // stratum `stratum` (the permutation element, made by the caller: cl/film.h makes a batch's
 // film and lens strata at once, PermutationElements).
+// One coordinate of the point of a stratum: its column or row `cell` jittered by xi, scaled
+// by inv = 1 / strata. The cell comes as an int (a stratum index is below 2^31, so the
+// conversion gives the uint's value): converting a signed int is one instruction, and the
+// camera batch's loops (cl/camera_batch.h) stay eight lanes wide with it.
+RT_DEVICE real StratumCoordinate(int cell, real xi, real inv) { return ((real)cell + xi) * inv; }
+
 // StratumPointOf is StratumPoint2D with the jitter xi = Random2D(k, dimension) given.
 RT_DEVICE_INLINE real2 StratumPointOf(SampleKey k, real2 xi, uint stratum) {
   if (k.strata <= 1u) return xi;
   real inv = 1.0f / (real)k.strata;
   uint row = StratumRow(stratum, k.strata, k.strata_magic);
-  return make_real2(((real)(stratum - row * k.strata) + xi.x) * inv, ((real)row + xi.y) * inv);
+  return make_real2(StratumCoordinate((int)(stratum - row * k.strata), xi.x, inv),
+                    StratumCoordinate((int)row, xi.y, inv));
 }
 
 RT_DEVICE_INLINE real2 StratumPoint2D(SampleKey k, uint dimension, uint stratum) {
