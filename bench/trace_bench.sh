@@ -80,10 +80,11 @@ measure() {  # BUILD SCENE DEVICE SPP [RAYTRACER FLAGS...]
        if ($i == "bvh") bvh = $(i + 1)} END {print cpu, mem, bvh}' "$log"
 }
 
-median() { sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
 # "median min max" of the numbers in $1 (space-separated).
 spread() { echo $1 | tr ' ' '\n' | sort -g | awk '{a[NR]=$1} END {
   printf "%.3f %.3f %.3f\n", (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2, a[1], a[NR]}'; }
+# The median of the numbers on standard input, one per line.
+median() { spread "$(cat)" | cut -d' ' -f1; }
 # The element-wise ratios of two equally long lists: $1[i] / $2[i].
 ratios() { paste <(echo $1 | tr ' ' '\n') <(echo $2 | tr ' ' '\n') |
   awk '{printf "%s ", ($2 > 0) ? $1 / $2 : 0}'; }
