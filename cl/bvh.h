@@ -122,6 +122,7 @@ RT_DEVICE int VisitChildren(RT_GLOBAL const BvhNode* node, RT_PRIVATE const Node
   real sorted_t[RT_BVH_WIDTH];
   int sorted_child[RT_BVH_WIDTH];
   int n = 0;
+  RT_KERNEL_UNROLL
   for (int i = 0; i < RT_BVH_WIDTH; ++i) {
     if (lane_hit[i] == 0) continue;
     int j = n++;
@@ -165,29 +166,14 @@ RT_DEVICE real3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
   return o;
 }
 
-// MakeTriangleRay for the world's direction, which only untransformed (or translated)
-// mesh instances use. Inlined into the kernel, its divisions depend on the ray alone, and
-// PoCL's compiler (LLVM's loop-invariant code motion) hoisted them out of the branch that
-// needs them to the start of every traversal: metal_glass_plates, whose meshes are all
-// rotated or scaled, paid them on every ray, shadow rays included (6 % of its CPU time).
-// A call is never hoisted out of its branch. GCC does not hoist them: the CPU reference
-// keeps the inlined code.
-#ifdef __OPENCL_C_VERSION__
-static __attribute__((noinline)) TriangleRay MakeWorldTriangleRay(real3 origin, real3 dir) {
-  return MakeTriangleRay(origin, dir);
-}
-#else
-#define MakeWorldTriangleRay MakeTriangleRay
-#endif
-
 // Finds the closest hit (any_hit = 0) or any hit at all (any_hit = 1, for shadow rays)
 // with t < ray->tmax. Returns 1 on a hit and fills *hit.
 // The ray comes by pointer and is read a component at a time: passed by value, the caller
 // copied it into the call's stack area in 16-byte pieces right after writing its
 // components one by one, and each such copy stalled on store-to-load forwarding (the
 // shadow ray's copy was a quarter of AddLightSamples' own time in hw3 spheres_dof).
-RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ray* ray_in,
-                             int any_hit, int cull, RT_PRIVATE Hit* hit) {
+RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ray* ray_in,
+                                    int any_hit, int cull, RT_PRIVATE Hit* hit) {
   real3 ray_origin = make_real3(ray_in->origin.x, ray_in->origin.y, ray_in->origin.z);
   real3 ray_direction = make_real3(ray_in->direction.x, ray_in->direction.y, ray_in->direction.z);
   int stack[RT_BVH_STACK];
@@ -238,7 +224,16 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ra
         if (moving) io = InstanceRayOrigin(inst, *ray_in);
         if (transformed) io = TransformPoint(inst->world_to_object, io);
       }
-      int world_direction = !transformed || (translated && translation_keeps_direction);
+      // The kernel has this path only for a scene with such meshes (RT_COMPILED; the CPU
+      // reference always has it). Inlined, the direction part of MakeTriangleRay depends on
+      // the ray alone, and PoCL's compiler (LLVM's loop-invariant code motion) moves its
+      // divisions to the start of every traversal: metal_glass_plates, whose meshes are all
+      // rotated or scaled, paid them on every ray, shadow rays included (6 % of its CPU
+      // time). Where such meshes exist, almost every ray does that work anyway, and moved it
+      // costs less than in a call that cannot be moved (tap_0200's camera rays on PoCL: 4 %).
+      // GCC moves nothing there.
+      int world_direction = RT_COMPILED(RT_FEATURE_WORLD_MESHES) &&
+                            (!transformed || (translated && translation_keeps_direction));
       if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {
         real3 id =
             transformed ? TransformVector(inst->world_to_object, ray_direction) : ray_direction;
@@ -257,7 +252,7 @@ RT_DEVICE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ra
           if (tr_has_world_direction) {
             SetTriangleRayOrigin(&object_tr, io);
           } else {
-            object_tr = MakeWorldTriangleRay(io, ray_direction);
+            object_tr = MakeTriangleRay(io, ray_direction);
             tr_has_world_direction = 1;
           }
         } else {

@@ -15,6 +15,12 @@
 // the CPU reference keeps GCC's own choice (its kernel is at GCC's inlining limits, and
 // forcing more into it moves other functions out).
 #define RT_KERNEL_INLINE static inline __attribute__((always_inline))
+// Unrolls the loop it precedes in the kernel only. PoCL's compiler keeps a short loop over
+// a node's lanes as a loop, with its arrays in memory; GCC unrolls it on its own.
+#define RT_KERNEL_UNROLL _Pragma("unroll")
+// A call in the kernel only: a function whose body should be compiled once per call site
+// family rather than inlined into the large kernel function.
+#define RT_KERNEL_NOINLINE static __attribute__((noinline))
 #define RT_GLOBAL __global
 #define RT_PRIVATE __private
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
@@ -44,6 +50,8 @@
 #define RT_DEVICE_INLINE inline __attribute__((always_inline))
 // A plain inline function on the CPU (see the OpenCL definition).
 #define RT_KERNEL_INLINE inline
+#define RT_KERNEL_UNROLL
+#define RT_KERNEL_NOINLINE inline
 #define RT_GLOBAL
 #define RT_PRIVATE
 

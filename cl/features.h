@@ -28,7 +28,10 @@
 #define RT_FEATURE_ENVIRONMENT_LIGHT (1 << 19)  // SphericalDirectionalLight (an HDR environment).
 // A camera with <Renderer>PathTracing (integrator/path.h).
 #define RT_FEATURE_PATH_TRACING (1 << 20)
-#define RT_FEATURE_ALL ((1 << 21) - 1)
+// A mesh whose rays keep the world's direction: not transformed, or translated only
+// (RT_INSTANCE_TRANSLATION). Its triangle ray's direction part is then made once per ray.
+#define RT_FEATURE_WORLD_MESHES (1 << 21)
+#define RT_FEATURE_ALL ((1 << 22) - 1)
 
 // Light and material type tags are their feature bits, so the features a scene needs are
 // the OR of the types it uses, and a new type is one new bit here (with its code in

@@ -5,19 +5,32 @@
 
 #include "bvh.h"
 
+// The traversal specialized for each query: GCC makes these copies itself (IntersectScene's
+// any_hit and cull are constants at each call), PoCL's compiler does not, and its one copy
+// tested any_hit at every node of every ray. In the kernel each is one call; on the CPU
+// they are inlined like any small function.
+RT_KERNEL_NOINLINE int TraceClosest(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ray* ray,
+                                    int cull, RT_PRIVATE Hit* hit) {
+  return IntersectScene(sd, ray, 0, cull, hit);
+}
+
+RT_KERNEL_NOINLINE int TraceOccluded(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ray* ray) {
+  Hit hit;
+  return IntersectScene(sd, ray, 1, 0, &hit);
+}
+
 // Both are inlined, so the traversal reads the caller's own ray (IntersectScene).
 
 // The closest hit with t < ray.tmax into *hit; 0 when the ray escapes. `cull` skips
 // triangles facing away from the ray.
 RT_DEVICE_INLINE int IntersectClosest(RT_PRIVATE const SceneData* sd, Ray ray, int cull,
                                       RT_PRIVATE Hit* hit) {
-  return IntersectScene(sd, &ray, 0, cull, hit);
+  return TraceClosest(sd, &ray, cull, hit);
 }
 
 // 1 when anything lies on the ray with t < ray.tmax; stops at the first hit found.
 RT_DEVICE_INLINE int IntersectOccluded(RT_PRIVATE const SceneData* sd, Ray ray) {
-  Hit hit;
-  return IntersectScene(sd, &ray, 1, 0, &hit);
+  return TraceOccluded(sd, &ray);
 }
 
 #endif  // RT_INTERSECT_H

@@ -273,7 +273,9 @@ int scene_features(const SceneDesc& scene, int camera, const RenderOptions& opti
     f |= sphere ? RT_FEATURE_SPHERES : RT_FEATURE_TRIANGLES;
     // In the camera's frame (src/world_frame.h).
     const Vec3d mesh_origin = sphere ? Vec3d{} : mesh_frame_origin(scene.meshes[o.mesh]);
-    if (!object_to_frame(o, mesh_origin, eye).is_identity()) f |= RT_FEATURE_TRANSFORMS;
+    const Mat4 to_frame = object_to_frame(o, mesh_origin, eye);
+    if (!to_frame.is_identity()) f |= RT_FEATURE_TRANSFORMS;
+    if (!sphere && keeps_world_direction(to_frame)) f |= RT_FEATURE_WORLD_MESHES;
     if (o.kind == ObjectDesc::kMesh && scene.meshes[o.mesh].smooth) f |= RT_FEATURE_SMOOTH;
     if (!is_zero(o.motion)) f |= RT_FEATURE_MOTION_BLUR;
     used[o.material] = true;

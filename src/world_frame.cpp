@@ -52,6 +52,19 @@ bool identity_linear_part(const float4 rows[3]) {
   return true;
 }
 
+}  // namespace
+
+bool keeps_world_direction(const Mat4& to_frame) {
+  if (to_frame.is_identity()) return true;
+  bool ok;
+  const Mat4 inv = to_frame.affine_inverse(&ok);
+  float4 rows[3];
+  set_rows(rows, inv);
+  return ok && identity_linear_part(rows);
+}
+
+namespace {
+
 bool finite_rows(const float4 rows[3]) {
   for (int r = 0; r < 3; ++r)
     if (!std::isfinite(rows[r].x) || !std::isfinite(rows[r].y) || !std::isfinite(rows[r].z) ||
@@ -178,11 +191,10 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
     inst.blas_root = sphere ? -1 : mesh->blas_root;
     inst.material = o.material;
     const bool transformed = !to_frame.is_identity();
-    inst.flags =
-        (transformed ? RT_INSTANCE_TRANSFORMED : 0) |
-        (transformed && identity_linear_part(inst.world_to_object) ? RT_INSTANCE_TRANSLATION : 0) |
-        (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
-        (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
+    inst.flags = (transformed ? RT_INSTANCE_TRANSFORMED : 0) |
+                 (transformed && keeps_world_direction(to_frame) ? RT_INSTANCE_TRANSLATION : 0) |
+                 (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
+                 (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
     unordered.push_back(inst);
     object_of.push_back(static_cast<int>(&o - scene.objects.data()));
     InstanceTextures it;

@@ -21,6 +21,11 @@ Vec3d mesh_frame_origin(const MeshDesc& mesh);
 // world frame whose origin is the world point `world_origin`, composed in double.
 Mat4 object_to_frame(const ObjectDesc& object, Vec3d mesh_origin, Vec3d world_origin);
 
+// Whether an object placed by `to_frame` sees rays in the world's direction: untransformed,
+// or translated only (RT_INSTANCE_TRANSLATION: the inverse's linear part exactly the
+// identity). The instances' flags and the feature bit RT_FEATURE_WORLD_MESHES both ask here.
+bool keeps_world_direction(const Mat4& to_frame);
+
 // The device's light array in the frame whose origin is the world point `origin`, in the
 // order the direct light is summed: point lights, area lights, then the other types.
 // Lights that draw random numbers are numbered in that order.

@@ -177,5 +177,46 @@ TEST(TranslationInstance, HitsAreTheGeneralPathsBitForBit) {
   EXPECT_GT(hits, 10000);
 }
 
+// The kernel compiles the shared-direction path only when the scene header says a mesh
+// needs it (RT_FEATURE_WORLD_MESHES, cl/bvh.h); the bit must be set exactly when some mesh
+// instance is untransformed or translated alone, or such an instance would be traced with
+// the general path's arithmetic in the kernel and the world's in the CPU reference.
+TEST(TranslationInstance, WorldMeshesFeatureIsSetExactlyForSuchMeshes) {
+  std::mt19937 rng(11);
+  Mesh grid = BumpyGridAndSquare(4, rng);
+  const Mat4 rotated = Mat4::rotation(30, {0, 0, 1});
+  const Mat4 scaled = Mat4::scaling({2, 2, 2});
+  const Mat4 moved = Mat4::translation({1.5, 0, -2});
+  struct Case {
+    const char* name;
+    std::vector<Mat4> meshes;
+    bool sphere;
+    bool want;
+  } cases[] = {
+      {"untransformed mesh", {Mat4{}}, false, true},
+      {"translated mesh", {moved}, false, true},
+      {"rotated mesh", {rotated}, false, false},
+      {"scaled mesh", {scaled}, false, false},
+      {"rotated and translated meshes", {rotated, moved}, false, true},
+      {"sphere only", {}, true, false},
+      {"rotated mesh and sphere", {rotated}, true, false},
+  };
+  for (const Case& c : cases) {
+    SceneDesc s = BaseScene();
+    int mesh = AddMesh(s, grid.positions, grid.triangles);
+    for (const Mat4& m : c.meshes) AddMeshObject(s, mesh, m);
+    if (c.sphere) AddSphere(s, Mat4::translation({0, 0, -5}));
+    FlatScene f = Flatten(s);
+    bool world_instance = false;
+    for (const Instance& inst : f.instances)
+      world_instance = world_instance || (inst.kind == RT_INSTANCE_MESH &&
+                                          ((inst.flags & RT_INSTANCE_TRANSFORMED) == 0 ||
+                                           (inst.flags & RT_INSTANCE_TRANSLATION) != 0));
+    const bool bit = (f.header.features & RT_FEATURE_WORLD_MESHES) != 0;
+    EXPECT_EQ(bit, c.want) << c.name;
+    EXPECT_EQ(bit, world_instance) << c.name << ": the bit and the instances' flags disagree";
+  }
+}
+
 }  // namespace
 }  // namespace rt
