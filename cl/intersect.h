@@ -5,10 +5,10 @@
 
 #include "bvh.h"
 
-// The traversal specialized for each query: GCC makes these copies itself (IntersectScene's
-// any_hit and cull are constants at each call), PoCL's compiler does not, and its one copy
-// tested any_hit at every node of every ray. In the kernel each is one call; on the CPU
-// they are inlined like any small function.
+// The traversal compiled once per query, any_hit a constant in each copy. GCC makes such a
+// copy itself (IntersectScene.constprop); PoCL's compiler kept one IntersectScene that
+// tested any_hit at every node of every ray. In the kernel each is a call of its own; on
+// the CPU they are ordinary inline functions.
 RT_KERNEL_NOINLINE int TraceClosest(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ray* ray,
                                     int cull, RT_PRIVATE Hit* hit) {
   return IntersectScene(sd, ray, 0, cull, hit);
