@@ -18,9 +18,15 @@
 // Unrolls the loop it precedes in the kernel only. PoCL's compiler keeps a short loop over
 // a node's lanes as a loop, with its arrays in memory; GCC unrolls it on its own.
 #define RT_KERNEL_UNROLL _Pragma("unroll")
-// A call in the kernel only: a function whose body should be compiled once per call site
-// family rather than inlined into the large kernel function.
+// A call of its own in the kernel on a CPU device (RT_CL_CPU_DEVICE, set by the host: PoCL),
+// whose compiler then optimizes the function apart from the large kernel function. A GPU's
+// compiler keeps its own choice (OpenCL compilers for GPUs inline nearly everything; a call
+// there was never measured).
+#ifdef RT_CL_CPU_DEVICE
 #define RT_KERNEL_NOINLINE static __attribute__((noinline))
+#else
+#define RT_KERNEL_NOINLINE static inline
+#endif
 #define RT_GLOBAL __global
 #define RT_PRIVATE __private
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
