@@ -36,8 +36,15 @@ typedef uint4 QuadIndex;
 #define QuadPermute(v, index) shuffle((v), (index))
 #define QuadIndexOf(a, b, c, d) ((uint4)((uint)(a), (uint)(b), (uint)(c), (uint)(d)))
 #define QuadLane(v, i) ((v).s##i)
-// Bit i set where lane i of a comparison's mask (-1 / 0 per lane) is set.
-#if RT_BVH_WIDTH == 4
+// Bit i set where lane i of a comparison's mask (-1 / 0 per lane) is set. On an x86 device
+// (PoCL) the lanes' sign bits are one instruction (movmskps, or a mask register's move
+// with AVX-512); LLVM compiles the portable form below to a masked load, three shuffles
+// and ors and a move, which sat between the triangle block's test and its branch.
+#if defined(__SSE__) && RT_BVH_WIDTH == 4
+RT_DEVICE int LaneBits(int4 m) { return __builtin_ia32_movmskps(as_float4(m)); }
+#elif defined(__AVX__) && RT_BVH_WIDTH == 8
+RT_DEVICE int LaneBits(int8 m) { return __builtin_ia32_movmskps256(as_float8(m)); }
+#elif RT_BVH_WIDTH == 4
 RT_DEVICE int LaneBits(int4 m) {
   int4 b = m & (int4)(1, 2, 4, 8);
   return (b.s0 | b.s1) | (b.s2 | b.s3);

@@ -37,32 +37,46 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   const CpuPixelFunction accumulate = select_cpu_kernel(flat_->double_precision).accumulate;
   // Threads take chunks of pixels, not rows, so a pass over a band of a few rows still
   // keeps every thread busy to its end. Each pixel is taken by one thread, which adds its
-  // samples in order: the image does not depend on the thread count.
-  constexpr size_t kChunk = 16;
-  std::atomic<size_t> next{0};
-  std::atomic<uint64_t> rays{0};
-  auto worker = [&] {
+  // samples in order: the image does not depend on the thread count. A chunk gives every
+  // thread about 16 (its last one then a small part of its work), from 16 to 256 pixels:
+  // long runs of film records let each core's prefetcher stay ahead (tap_0200's camera rays
+  // on two threads took 6 % more CPU time with 16-pixel chunks than with 256).
+  const size_t chunk =
+      std::clamp<size_t>(count / (16 * static_cast<size_t>(std::max(1, threads_))), 16, 256);
+  // What the threads write, each on a cache line of its own; everything else a worker reads
+  // it holds by value. Read through references into this frame, those values shared cache
+  // lines with the locals the calling thread spills at every pixel, and each such write cost
+  // the other thread a miss per pixel (tap_0200's camera rays: 13 % more CPU time on two
+  // threads than on one).
+  struct alignas(64) Next {
+    std::atomic<size_t> offset{0};
+  } next;
+  struct alignas(64) Rays {
+    std::atomic<uint64_t> total{0};
+  } rays;
+  auto worker = [&next, &rays, chunk, first, count, width, accumulate, sd = &view_,
+                 accum = accum_.data(), primary = primary_.data(), s0 = work.sample_begin,
+                 s1 = work.sample_end] {
     uint64_t mine = 0;
-    for (size_t c; (c = next.fetch_add(kChunk)) < count;) {
+    for (size_t c; (c = next.offset.fetch_add(chunk)) < count;) {
       // The pixel's coordinates advance with it: one division per chunk, not two per pixel.
       const size_t begin = first + c;
       int y = static_cast<int>(begin / width), x = static_cast<int>(begin - size_t(y) * width);
-      for (size_t i = begin, end = first + std::min(count, c + kChunk); i < end; ++i) {
-        const uint32_t before = accum_[i].rays;
-        accumulate(&view_, x, y, work.sample_begin, work.sample_end, &accum_[i], &primary_[i]);
-        mine += accum_[i].rays - before;
+      for (size_t i = begin, end = first + std::min(count, c + chunk); i < end; ++i) {
+        const uint32_t before = accum[i].rays;
+        accumulate(sd, x, y, s0, s1, &accum[i], &primary[i]);
+        mine += accum[i].rays - before;
         if (++x == width) x = 0, ++y;
       }
     }
-    rays += mine;
+    rays.total += mine;
   };
-  const int helpers =
-      static_cast<int>(std::min<size_t>(threads_, (count + kChunk - 1) / kChunk)) - 1;
+  const int helpers = static_cast<int>(std::min<size_t>(threads_, (count + chunk - 1) / chunk)) - 1;
   std::vector<std::thread> pool;
   for (int t = 0; t < helpers; ++t) pool.emplace_back(worker);
   worker();
   for (std::thread& t : pool) t.join();
-  return rays.load();
+  return rays.total.load();
 }
 
 }  // namespace rt
