@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <thread>
 
 #include "device/cpu_kernel.h"
 #include "util/parallel_for.h"
@@ -41,42 +40,29 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   // thread about 16 (its last one then a small part of its work), from 16 to 256 pixels:
   // long runs of film records let each core's prefetcher stay ahead (tap_0200's camera rays
   // on two threads took 6 % more CPU time with 16-pixel chunks than with 256).
-  const size_t chunk =
-      std::clamp<size_t>(count / (16 * static_cast<size_t>(std::max(1, threads_))), 16, 256);
-  // What the threads write, each on a cache line of its own; everything else a worker reads
-  // it holds by value. Read through references into this frame, those values shared cache
-  // lines with the locals the calling thread spills at every pixel, and each such write cost
-  // the other thread a miss per pixel (tap_0200's camera rays on two threads: 8 % more rays
-  // per CPU-second once apart).
-  struct alignas(64) Next {
-    std::atomic<size_t> offset{0};
-  } next;
-  struct alignas(64) Rays {
-    std::atomic<uint64_t> total{0};
-  } rays;
-  auto worker = [&next, &rays, chunk, first, count, width, accumulate, sd = &view_,
-                 accum = accum_.data(), primary = primary_.data(), s0 = work.sample_begin,
-                 s1 = work.sample_end] {
+  const size_t chunk = std::clamp<size_t>(count / (16 * static_cast<size_t>(threads_)), 16, 256);
+  const int chunks = static_cast<int>((count + chunk - 1) / chunk);
+  // Each thread copies the loop's values (parallel_for copies fn): read through references
+  // into this frame, they would share cache lines with what the calling thread writes.
+  PaddedAtomic<uint64_t> rays;
+  auto render_chunk = [&rays, chunk, first, count, width, accumulate, sd = &view_,
+                       accum = accum_.data(), primary = primary_.data(), s0 = work.sample_begin,
+                       s1 = work.sample_end](int k) {
+    // The pixel's coordinates advance with it: one division per chunk.
+    const size_t c = static_cast<size_t>(k) * chunk, begin = first + c;
+    int y = static_cast<int>(begin / width);
+    int x = static_cast<int>(begin - size_t(y) * width);
     uint64_t mine = 0;
-    for (size_t c; (c = next.offset.fetch_add(chunk)) < count;) {
-      // The pixel's coordinates advance with it: one division per chunk, not two per pixel.
-      const size_t begin = first + c;
-      int y = static_cast<int>(begin / width), x = static_cast<int>(begin - size_t(y) * width);
-      for (size_t i = begin, end = first + std::min(count, c + chunk); i < end; ++i) {
-        const uint32_t before = accum[i].rays;
-        accumulate(sd, x, y, s0, s1, &accum[i], &primary[i]);
-        mine += accum[i].rays - before;
-        if (++x == width) x = 0, ++y;
-      }
+    for (size_t i = begin, end = first + std::min(count, c + chunk); i < end; ++i) {
+      const uint32_t before = accum[i].rays;
+      accumulate(sd, x, y, s0, s1, &accum[i], &primary[i]);
+      mine += accum[i].rays - before;
+      if (++x == width) x = 0, ++y;
     }
-    rays.total += mine;
+    rays.value += mine;
   };
-  const int helpers = static_cast<int>(std::min<size_t>(threads_, (count + chunk - 1) / chunk)) - 1;
-  std::vector<std::thread> pool;
-  for (int t = 0; t < helpers; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  return rays.total.load();
+  parallel_for(chunks, threads_, render_chunk);
+  return rays.value.load();
 }
 
 }  // namespace rt
