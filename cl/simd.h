@@ -11,7 +11,8 @@
 
 #include "compat.h"
 
-// Children per BVH node. 4 won over 8 on the CPU reference and on PoCL (bench/README.md).
+// Children per BVH node. 4 won over 8 on the CPU reference and on PoCL
+// (docs/figures_history.md). The host passes its value to the kernel's build.
 #ifndef RT_BVH_WIDTH
 #define RT_BVH_WIDTH 4
 #endif

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cl/simd.h"
 #include "cl_scene_buffers.h"
 #include "io/file_util.h"
 
@@ -70,6 +71,9 @@ void check_precision_support(const std::string& device_name, bool has_fp64, bool
 std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision) const {
   check_precision_support(name_, fp64_, double_precision);
   std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
+  // The node and triangle-block layouts the host built (cl/simd.h): a host compiled with
+  // another RT_BVH_WIDTH than the kernel's default must not hand it arrays of that width.
+  o += " -DRT_BVH_WIDTH=" + std::to_string(RT_BVH_WIDTH);
   if (double_precision) o += " -DRT_REAL_DOUBLE=1";
   // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/film.h).
   if (cpu_) o += " -DRT_CL_CPU_DEVICE=1";
