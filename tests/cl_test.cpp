@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cl/features.h"
+#include "cl/simd.h"
 #include "cl_scene_buffers.h"
 #include "device/cl/cl_device.h"
 #include "device/cl/cl_program.h"
@@ -207,6 +208,10 @@ TEST(OpenCl, KernelBuildsSpecializedAndGeneric) {
   rt::DeviceLoadInfo t;
   rt::RenderResult base = render_on_cl(l.flat, false, &t);
   EXPECT_NE(t.build_options.find("-DRT_KERNEL_FEATURES=" + std::to_string(l.flat.header.features)),
+            std::string::npos)
+      << t.build_options;
+  // The kernel reads the arrays at the node width the host built them with.
+  EXPECT_NE(t.build_options.find("-DRT_BVH_WIDTH=" + std::to_string(RT_BVH_WIDTH)),
             std::string::npos)
       << t.build_options;
   EXPECT_EQ(t.build_options.find("fast-relaxed"), std::string::npos);
