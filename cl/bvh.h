@@ -159,6 +159,18 @@ RT_DEVICE int IdentityKeepsDirection(real3 inv_d) {
          (inv_d.y != 0.0f) & (inv_d.z > -RT_INFINITY) & (inv_d.z != 0.0f);
 }
 
+// Whether a closest-hit candidate at distance t <= hit->t, on primitive `primitive` of
+// instance `instance` (-1 for a sphere), replaces *hit: when it is nearer, or at the same
+// distance with a smaller (instance, primitive). Ties are settled by index rather than by
+// which was found first, so the closest hit is the same whatever the order of the tree's
+// visits: the same for 4- and 8-wide nodes, and so on every device whichever width it
+// traverses (two triangles sharing an edge both report a ray through it, at equal t).
+RT_DEVICE int ClosestHitWins(RT_PRIVATE const Hit* hit, real t, int instance, int primitive) {
+  if (t < hit->t) return 1;
+  if (hit->instance < 0 || t != hit->t) return 0;  // No hit yet: t == ray.tmax is a miss.
+  return instance < hit->instance || (instance == hit->instance && primitive < hit->primitive);
+}
+
 // World-space origin of an instance's ray at the ray's time.
 RT_DEVICE real3 InstanceRayOrigin(RT_GLOBAL const Instance* inst, Ray ray) {
   real3 o = ray.origin;
@@ -238,7 +250,11 @@ RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
         real3 id =
             transformed ? TransformVector(inst->world_to_object, ray_direction) : ray_direction;
         real t;
-        if (IntersectUnitSphere(io, id, tmax, &t)) {
+        // A closest-hit query takes the sphere's nearest t > 0 and leaves the comparison with
+        // tmax, ties included, to ClosestHitWins (the far root is nearer than tmax only when
+        // the near one is, or lies behind the origin).
+        if (IntersectUnitSphere(io, id, any_hit ? tmax : RT_INFINITY, &t) &&
+            (any_hit || ClosestHitWins(hit, t, ii, -1))) {
           tmax = t;
           hit->t = t;
           hit->instance = ii;
@@ -272,7 +288,7 @@ RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
       for (int n = RtLeafCount(ref); n > 0; n -= RT_BVH_WIDTH, ++block) {
         real t, b1, b2;
         int lane = IntersectTriangleBlock(block, &object_tr, tmax, cull, any_hit, &t, &b1, &b2);
-        if (lane >= 0) {
+        if (lane >= 0 && (any_hit || ClosestHitWins(hit, t, instance, block->first + lane))) {
           tmax = t;
           hit->t = t;
           hit->instance = instance;

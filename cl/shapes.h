@@ -103,8 +103,9 @@ RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, real3 p0, real
   if (det == 0.0f || (cull && det < 0.0f)) return 0;
   real az = tr->sz * a.z, bz = tr->sz * b.z, cz = tr->sz * c.z;
   real tscaled = u * az + v * bz + w * cz;
-  if (det < 0.0f && (tscaled >= 0.0f || tscaled < tmax * det)) return 0;
-  if (det > 0.0f && (tscaled <= 0.0f || tscaled > tmax * det)) return 0;
+  // Only the sign is checked before the division: a test of tscaled against tmax * det
+  // rounds differently from t against tmax, and could refuse a t just below tmax.
+  if (det < 0.0f ? tscaled >= 0.0f : tscaled <= 0.0f) return 0;
   real inv_det = 1.0f / det;
   *t = tscaled * inv_det;
   *b1 = v * inv_det;
@@ -114,13 +115,11 @@ RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, real3 p0, real
 
 // IntersectTriangle on the RT_BVH_WIDTH triangles of a block at once, lane by lane the same
 // operations in the same order, so every lane rounds as the scalar test does. Returns the
-// lane the scalar test run over the lanes in order would keep (the nearest hit, the first
-// of equal ones; with any_hit, the first hit) and sets *t, *b1, *b2, or -1 for none. The
-// lanes are tested against the tmax the block starts with; the scalar test narrows tmax
-// after each hit, and its early rejection (tscaled against tmax * det) then depends on the
-// narrowed value, so the lanes that pass are checked again in order against it: a lane the
-// scalar loop keeps always passes at the starting tmax too (rounding is monotonic), so the
-// result is the scalar loop's exactly.
+// lane of least t among the hits (the first of equal ones), or -1 for none, and sets *t,
+// *b1, *b2. A hit has 0 < t < tmax, or t <= tmax for a closest-hit query (!any_hit): a
+// triangle at exactly the distance of the hit found so far is a tie, which the traversal
+// settles by index (ClosestHitWins in cl/bvh.h), so that the closest hit does not depend on
+// the order triangles are tested in. With any_hit the first lane hit is returned.
 RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
                                      RT_PRIVATE const TriangleRay* tr, real tmax, int cull,
                                      int any_hit, RT_PRIVATE real* t, RT_PRIVATE real* b1,
@@ -144,33 +143,21 @@ RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
   miss |= det == zero;
   if (cull) miss |= det < zero;
   LaneReal tscaled = u * (tr->lane_sz * az) + vv * (tr->lane_sz * bz) + w * (tr->lane_sz * cz);
-  LaneReal tmax_det = LaneSplat(tmax) * det;
-  miss |= (det < zero) & ((tscaled >= zero) | (tscaled < tmax_det));
-  miss |= (det > zero) & ((tscaled <= zero) | (tscaled > tmax_det));
   LaneReal inv_det = LaneSplat(1.0f) / det;
   LaneReal lane_t = tscaled * inv_det;
-  LaneRealMask found = ~miss & (lane_t > zero) & (lane_t < LaneSplat(tmax));
+  // t > 0 also refuses the lanes whose tscaled has det's opposite sign (or is zero).
+  LaneRealMask in_range = any_hit ? lane_t < LaneSplat(tmax) : lane_t <= LaneSplat(tmax);
+  LaneRealMask found = ~miss & (lane_t > zero) & in_range;
   int hits = LaneBits(LaneMaskToInt(found));
   if (hits == 0) return -1;
   real ts[RT_BVH_WIDTH];
   LaneStoreR(lane_t, ts);
   int best = LowestLane(hits);
-  hits &= hits - 1;
-  if (hits != 0 && !any_hit) {
-    real dets[RT_BVH_WIDTH], tss[RT_BVH_WIDTH];
-    LaneStoreR(det, dets);
-    LaneStoreR(tscaled, tss);
-    tmax = ts[best];
-    for (; hits != 0; hits &= hits - 1) {
-      // tmax has narrowed: the scalar test's checks that depend on it.
+  if (!any_hit)
+    for (hits &= hits - 1; hits != 0; hits &= hits - 1) {
       int i = LowestLane(hits);
-      real limit = tmax * dets[i];
-      if (dets[i] < 0.0f ? tss[i] < limit : tss[i] > limit) continue;
-      if (!(ts[i] < tmax)) continue;
-      best = i;
-      tmax = ts[i];
+      if (ts[i] < ts[best]) best = i;
     }
-  }
   real invs[RT_BVH_WIDTH], vs[RT_BVH_WIDTH], ws[RT_BVH_WIDTH];
   LaneStoreR(inv_det, invs);
   LaneStoreR(vv, vs);

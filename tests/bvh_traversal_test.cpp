@@ -3,6 +3,7 @@
 // leaf box's face.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -195,6 +196,63 @@ TEST(GeometryBvhTraversal, AxisRayGrazingTheLowFaceOfALeafBox) {
     EXPECT_TRUE(Trace(scene, o, d, kInf, 0, &h));
     EXPECT_EQ(h.instance >= 0 ? h.t : -1.0f, 2.0f);
   }
+}
+
+// A ray through an edge two triangles share meets both at the same t, and one through a
+// vertex meets all around it: ties, here on a bumpy grid (integer x, y; z in eighths) whose
+// triangles are numbered in shuffled order, with rays along -z through its edges' midpoints
+// and its vertices (edge functions exactly zero). The closest hit must be the least
+// (t, primitive) over every triangle (ClosestHitWins), whatever tree is built and so
+// whatever order its leaves are visited in, which also makes it the same for 4- and 8-wide
+// nodes. Before that rule, the triangle visited first won a tie.
+TEST(GeometryBvhTraversal, TiesGoToTheLowestIndexWhateverTheTree) {
+  std::mt19937 rng(77);
+  const int n = 24;
+  std::vector<Vec3d> positions;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) positions.push_back({double(x), double(y), (rng() % 16) / 8.0});
+  std::vector<std::array<int, 3>> triangles;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      int a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+      triangles.push_back({a, b, d});
+      triangles.push_back({a, d, c});
+    }
+  std::shuffle(triangles.begin(), triangles.end(), rng);
+  std::vector<TestRay> rays;
+  const float3 down = make_float3(0, 0, -1);
+  for (int y = 1; y < n; ++y)
+    for (int x = 1; x < n; ++x)
+      for (float3 p : {F3(x, y, 5), F3(x + 0.5, y, 5), F3(x, y + 0.5, 5), F3(x + 0.5, y + 0.5, 5)})
+        rays.push_back({p, down, kInf});
+  int ties = 0;
+  for (int bins : {2, 16, 64})
+    for (int max_leaf : {1, 4, 16}) {
+      SCOPED_TRACE("bins " + std::to_string(bins) + " max_leaf " + std::to_string(max_leaf));
+      SceneDesc s = BaseScene();
+      AddMeshObject(s, AddMesh(s, positions, triangles), Mat4());
+      FlatScene scene = Flatten(s, bins, max_leaf);
+      int bad = 0;
+      for (const TestRay& r : rays) {
+        TriangleRay tr = MakeTriangleRay(r.o, r.d);
+        int best = -1, tied = 0;
+        float best_t = 0;
+        for (size_t i = 0; i < scene.triangles.size(); ++i) {
+          const Triangle& t = scene.triangles[i];
+          float ti, b1, b2;
+          if (!IntersectTriangle(&tr, t.v0, t.v1, t.v2, kInf, 0, &ti, &b1, &b2)) continue;
+          if (best >= 0 && ti == best_t) ++tied;
+          if (best < 0 || ti < best_t) best = static_cast<int>(i), best_t = ti, tied = 1;
+        }
+        ties += tied > 1;
+        Hit h;
+        bool hit = Trace(scene, r.o, r.d, r.tmax, 0, &h);
+        if ((hit ? h.primitive : -1) != best || (hit && h.t != best_t)) ++bad;
+      }
+      EXPECT_EQ(bad, 0);
+    }
+  // Every ray lies on an edge or a vertex.
+  EXPECT_EQ(ties, 9 * static_cast<int>(rays.size()));
 }
 
 }  // namespace
