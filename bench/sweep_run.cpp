@@ -52,9 +52,11 @@ rt::RenderDevice* Open(const Config& c, rt::DevicePool& devices) {
 
 Timed Render(rt::SceneDesc& scene, const Config& c, int camera, rt::DevicePool& devices, int reps) {
   CameraOverride use(scene, camera, c.path_flags);
-  rt::FlatScene flat = rt::flatten_scene(scene, c.opt);
-  rt::set_camera(flat, scene, camera, c.opt);
   rt::RenderDevice* device = Open(c, devices);
+  rt::RenderOptions opt = c.opt;
+  opt.bvh.width = rt::resolve_bvh_width(opt.bvh.width, *device);  // As the executable does.
+  rt::FlatScene flat = rt::flatten_scene(scene, opt);
+  rt::set_camera(flat, scene, camera, opt);
   device->load(flat);  // Builds (or finds) the program: not part of the timed render.
   rt::Progress quiet(false, "", 0);
   std::vector<Timed> runs;

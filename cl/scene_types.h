@@ -116,7 +116,8 @@ typedef struct Instance {
   int flags;
 } Instance;
 
-// A node of the wide BVH: the boxes of up to RT_BVH_WIDTH children, one lane per child,
+// A node of the wide BVH: the boxes of up to RT_BVH_WIDTH children (the width the host
+// built this device's arrays with, src/bvh_lanes.h), one lane per child,
 // stored as one vector per bound (structure of arrays) so one node test checks every child
 // at once with aligned vector loads. child[i] is a node index (>= 0), RT_BVH_EMPTY for an
 // unused lane, or a leaf reference made by RtLeafRef (count triangles from the block

@@ -11,8 +11,9 @@
 
 #include "compat.h"
 
-// Children per BVH node. 4 won over 8 on the CPU reference and on PoCL
-// (docs/figures_history.md). The host passes its value to the kernel's build.
+// Children per BVH node. The CPU reference is compiled for 4, which beats 8 with GCC; the
+// host picks the width per device (RenderDevice::bvh_width: 8 for PoCL on a CPU, which
+// traverses it faster) and passes it to the kernel's build (docs/figures_history.md).
 #ifndef RT_BVH_WIDTH
 #define RT_BVH_WIDTH 4
 #endif

@@ -23,6 +23,10 @@ struct BvhOptions {
   int bins = 16;     // SAH bins per axis.
   int max_leaf = 4;  // Primitives per leaf the SAH may stop at (the top level uses 1).
   int threads = 0;   // Build threads; 0: all cores. The tree does not depend on it.
+  // Children per wide node (and triangles per leaf block): 4 or 8; 0 takes this build's
+  // RT_BVH_WIDTH, the one the CPU reference is compiled for. The executable asks the device
+  // (RenderDevice::bvh_width). The binary tree, and so the image, do not depend on it.
+  int width = 0;
 };
 
 // A binary node: leaf when count > 0 (primitives first..first+count-1), otherwise an

@@ -1,11 +1,21 @@
 #include "cl_scene_buffers.h"
 
 #include <stdexcept>
+#include <type_traits>
+
+#include "bvh_lanes.h"
 
 #include "render.h"
 
 namespace rt {
 namespace {
+
+// Elements of a FlatScene array that make one item of the kernel's: a node or a triangle
+// block of bvh_width lanes spans wide_units of this build's (src/bvh_lanes.h).
+template <typename T>
+uint64_t elements_per_item(int bvh_width) {
+  return std::is_same_v<T, BvhNode> || std::is_same_v<T, TriangleBlock> ? wide_units(bvh_width) : 1;
+}
 
 template <typename T>
 cl::Buffer upload(const cl::Context& context, const T* data, size_t count, bool share) {
@@ -46,10 +56,11 @@ std::vector<std::pair<const char*, uint64_t>> scene_array_bytes(const FlatScene&
   return out;
 }
 
-std::vector<std::pair<const char*, uint64_t>> scene_layout() {
+std::vector<std::pair<const char*, uint64_t>> scene_layout(int bvh_width) {
   std::vector<std::pair<const char*, uint64_t>> out;
 #define RT_LAYOUT_OF_TYPE(Type) out.emplace_back(#Type, sizeof(Type));
-#define RT_LAYOUT_OF_ARRAY(Type, name) out.emplace_back(#Type, sizeof(Type));
+#define RT_LAYOUT_OF_ARRAY(Type, name) \
+  out.emplace_back(#Type, sizeof(Type) * elements_per_item<Type>(bvh_width));
   RT_LAYOUT_TYPES(RT_LAYOUT_OF_TYPE)
   RT_DATA_ARRAYS(RT_LAYOUT_OF_ARRAY)
 #undef RT_LAYOUT_OF_TYPE
@@ -58,8 +69,8 @@ std::vector<std::pair<const char*, uint64_t>> scene_layout() {
 }
 
 void check_scene_layout(const cl::Context& context, cl::CommandQueue& queue,
-                        const cl::Program& program, const std::string& device_name) {
-  const std::vector<std::pair<const char*, uint64_t>> host = scene_layout();
+                        const cl::Program& program, const std::string& device_name, int bvh_width) {
+  const std::vector<std::pair<const char*, uint64_t>> host = scene_layout(bvh_width);
   cl::Kernel k(program, "rt_sizes");
   cl::Buffer out(context, CL_MEM_WRITE_ONLY, sizeof(cl_int) * host.size());
   k.setArg(0, out);

@@ -39,12 +39,14 @@ int bind_scene(cl::Kernel& kernel, const ClSceneBuffers& buffers, int first_arg)
 std::vector<std::pair<const char*, uint64_t>> scene_array_bytes(const FlatScene& flat);
 
 // Host sizes of the shared structs, in the order the kernel `rt_sizes` (cl/kernel.cl)
-// writes the device's.
-std::vector<std::pair<const char*, uint64_t>> scene_layout();
+// writes the device's, for a kernel built for nodes of `bvh_width` children.
+std::vector<std::pair<const char*, uint64_t>> scene_layout(int bvh_width = RT_BVH_WIDTH);
 
-// Runs `rt_sizes` of `program` and throws std::runtime_error (one line naming the struct
-// and both sizes) when a struct differs between the host and `device_name`.
+// Runs `rt_sizes` of `program` (built for `bvh_width`) and throws std::runtime_error (one
+// line naming the struct and both sizes) when a struct differs between the host and
+// `device_name`.
 void check_scene_layout(const cl::Context& context, cl::CommandQueue& queue,
-                        const cl::Program& program, const std::string& device_name);
+                        const cl::Program& program, const std::string& device_name,
+                        int bvh_width);
 
 }  // namespace rt

@@ -178,7 +178,13 @@ OptionTable<CliOptions> make_raytracer_table() {
       .integer("--bvh-bins", "N", Range::closed(2, 256), RT_FIELD(render.bvh.bins),
                "SAH bins per axis")
       .integer("--bvh-leaf", "N", Range::closed(1, RT_BVH_MAX_LEAF), RT_FIELD(render.bvh.max_leaf),
-               "largest leaf the SAH may keep (at most 16, the wide leaf format's limit)");
+               "largest leaf the SAH may keep (at most 16, the wide leaf format's limit)")
+      .choice("--bvh-width",
+              std::vector<std::pair<std::string, int>>{{"auto", 0}, {"4", 4}, {"8", 8}},
+              RT_FIELD(render.bvh.width),
+              "children per BVH node and triangles per leaf block; auto: the device's fastest "
+              "(8 on an OpenCL CPU device, 4 on the CPU reference, which renders only 4, and "
+              "on GPUs); the image is the same at either width");
   t.include(device_option_table(), RT_FIELD(render));
   t.section("Kernel build", Reach::kDevice)
       .choice("--kernel",

@@ -23,8 +23,6 @@ static_assert(sizeof(Material) == 112, "Material layout");
 static_assert(sizeof(Light) == 128, "Light layout");
 static_assert(sizeof(Camera) == 176, "Camera layout");
 static_assert(sizeof(Instance) == 144, "Instance layout");
-static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH, "BvhNode layout");
-static_assert(sizeof(TriangleBlock) == (RT_BVH_WIDTH == 4 ? 160 : 320), "TriangleBlock layout");
 static_assert(sizeof(SceneHeader) == 272, "SceneHeader layout");
 static_assert(sizeof(TextureDesc) == 96, "TextureDesc layout");
 static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
@@ -81,6 +79,11 @@ SceneData FlatScene::view() const {
 FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   FlatScene f;
+  f.bvh_width = options.bvh.width != 0 ? options.bvh.width : RT_BVH_WIDTH;
+  if (!valid_bvh_width(f.bvh_width))
+    throw std::invalid_argument("--bvh-width " + std::to_string(options.bvh.width) +
+                                ": this build makes nodes of 4 or 8 children, a multiple of " +
+                                std::to_string(RT_BVH_WIDTH));
   f.materials.assign(scene.materials.begin(), scene.materials.end());
   // Bottom level: one BVH per mesh, whatever the number of its instances, in the mesh's
   // frame: its vertices relative to its frame origin, subtracted in double.
@@ -112,8 +115,9 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     BvhBuildResult r = build_bvh(prims, options.bvh, options.bvh.max_leaf, offset, binary);
     // Room for the wide nodes, at most one per interior binary node (and the root), so that
     // the collapse does not copy the array as it grows; the pages past its end stay untouched.
-    const size_t most_nodes = f.nodes.size() + binary.size() / 2 + 1;
-    if (f.nodes.capacity() < most_nodes) f.nodes.reserve(std::max(most_nodes, 2 * f.nodes.size()));
+    WideNodes nodes(f.nodes, f.bvh_width);
+    const size_t most_nodes = nodes.size() + binary.size() / 2 + 1;
+    if (nodes.capacity() < most_nodes) nodes.reserve(std::max(most_nodes, 2 * nodes.size()));
     fm.box.grow(binary[r.root].lo[0], binary[r.root].lo[1], binary[r.root].lo[2]);
     fm.box.grow(binary[r.root].hi[0], binary[r.root].hi[1], binary[r.root].hi[2]);
     // The collapse (serial) runs beside the copies below, which need only the order; the
@@ -123,7 +127,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     std::exception_ptr collapse_error;
     auto collapse = [&] {
       try {
-        w = collapse_bvh(binary, r.root, f.nodes);
+        w = collapse_bvh(binary, r.root, nodes, /*merge_leaves=*/true);
       } catch (...) {
         collapse_error = std::current_exception();
       }
@@ -189,6 +193,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   if (f.name.empty()) f.name.emplace_back();
   RT_DATA_ARRAYS(RT_PAD_ARRAY)
 #undef RT_PAD_ARRAY
+  f.triangle_blocks.resize(std::max(f.triangle_blocks.size(), wide_units(f.bvh_width)));
   // The top level and the lights, in the world's frame until a camera is set.
   place_world(f, scene, Vec3d{}, options);
   SceneHeader& h = f.header;

@@ -76,8 +76,11 @@ struct FlatScene {
   // Host-side only: what a change of frame (place_world) keeps and where the frame is.
   std::vector<FlatMesh> meshes;  // Per SceneDesc::meshes.
   size_t blas_nodes = 0;         // nodes[0, blas_nodes) are the bottom levels.
-  Vec3d world_origin;            // The world point at the devices' origin.
-  float env_power = 0;           // The environment map's mean importance (flatten_environment).
+  // Host-side only: children per node and triangles per block (src/bvh_lanes.h); the
+  // arrays hold bvh_width / RT_BVH_WIDTH elements per node and per block.
+  int bvh_width = RT_BVH_WIDTH;
+  Vec3d world_origin;   // The world point at the devices' origin.
+  float env_power = 0;  // The environment map's mean importance (flatten_environment).
   // Host-side only: which build of the shared math runs (both devices; cl/util/real.h).
   bool double_precision = false;
 

@@ -22,17 +22,18 @@ namespace {
 void print_stats(const std::string& out, const rt::RenderDevice& device, const rt::JobScene& s,
                  const rt::FlatScene& flat, const rt::DeviceLoadInfo& load,
                  const rt::RenderResult& r) {
-  std::fprintf(stderr,
-               "stats: %s: device %s | load %.1f ms | bvh %.1f ms (%zu nodes, %zu triangles, "
-               "%zu instances, depth top %d / mesh %d) | camera frame %.2f ms | kernel compile "
-               "%.1f ms%s | upload %.1f ms (%.0f MiB shared) | render "
-               "%.3f s | %d spp | %.3f Msamples/s | %.3f Mrays/s | features 0x%x\n",
-               out.c_str(), device.name().c_str(), s.load_ms, flat.stats.bvh_build_ms,
-               flat.stats.nodes, flat.stats.triangles, flat.stats.instances, flat.stats.tlas_depth,
-               flat.stats.max_blas_depth, flat.stats.place_ms, load.compile_ms,
-               load.cache_hit ? " (cache hit)" : "", load.upload_ms, load.shared_bytes / 1048576.0,
-               r.seconds, r.spp, r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
-               static_cast<unsigned>(flat.header.features));
+  std::fprintf(
+      stderr,
+      "stats: %s: device %s | load %.1f ms | bvh %.1f ms (%zu %d-wide nodes, %zu triangles, "
+      "%zu instances, depth top %d / mesh %d) | camera frame %.2f ms | kernel compile "
+      "%.1f ms%s | upload %.1f ms (%.0f MiB shared) | render "
+      "%.3f s | %d spp | %.3f Msamples/s | %.3f Mrays/s | features 0x%x\n",
+      out.c_str(), device.name().c_str(), s.load_ms, flat.stats.bvh_build_ms, flat.stats.nodes,
+      flat.bvh_width, flat.stats.triangles, flat.stats.instances, flat.stats.tlas_depth,
+      flat.stats.max_blas_depth, flat.stats.place_ms, load.compile_ms,
+      load.cache_hit ? " (cache hit)" : "", load.upload_ms, load.shared_bytes / 1048576.0,
+      r.seconds, r.spp, r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
+      static_cast<unsigned>(flat.header.features));
   if (s.desc.degenerate_triangles)
     std::fprintf(stderr, "stats: degenerate triangles skipped: %d\n", s.desc.degenerate_triangles);
 }
@@ -54,6 +55,7 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
       rt::resolve_precision(render.precision, device->has_double(), device->name(), &notice);
   if (new_device && !notice.empty() && !opt.quiet)
     std::fprintf(stderr, "notice: %s\n", notice.c_str());
+  render.bvh.width = rt::resolve_bvh_width(render.bvh.width, *device);
   rt::FlatScene flat = rt::flatten_scene(s.desc, render);
   // Every image's memory is checked before the first render starts.
   for (int c : cameras) {
@@ -78,10 +80,9 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
     rt::Progress progress(rt::Progress::wanted(opt.quiet), s.desc.cameras[c].image_name,
                           static_cast<uint64_t>(fc.width) * fc.height * fc.samples);
     rt::DeviceLoadInfo load;
-    rt::RenderResult r =
-        rt::render_camera(*device, flat, progress,
-                          rt::camera_stop_rule(opt.render.stop, s.desc.cameras[c]),
-                          &rt::stop_requested(), &load);
+    rt::RenderResult r = rt::render_camera(*device, flat, progress,
+                                           rt::camera_stop_rule(opt.render.stop, s.desc.cameras[c]),
+                                           &rt::stop_requested(), &load);
     progress.finish();
     const std::string out = rt::image_path(opt, s, c);
     rt::write_outputs(opt, s.path, c, s.desc.cameras[c], device->name(), r, out);

@@ -206,7 +206,7 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
   std::vector<int> order;
   std::vector<BinaryBvhNode> binary;
   BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, binary, order);
-  WideBvhResult wide_top = collapse_bvh(binary, top.root, f.nodes);
+  WideBvhResult wide_top = collapse_bvh(binary, top.root, WideNodes(f.nodes, f.bvh_width));
   f.instances.clear();
   f.instance_textures.clear();
   std::vector<int> instance_of_object(scene.objects.size(), -1);
@@ -222,14 +222,14 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
   place_environment(scene, f);
   f.header.tlas_root = wide_top.root;
   f.stats.tlas_depth = wide_top.depth;
-  f.stats.nodes = f.nodes.size();
+  f.stats.nodes = f.nodes.size() / wide_units(f.bvh_width);
   f.stats.instances = f.instances.size();
   f.header.num_instances = static_cast<int>(f.stats.instances);
   f.header.num_lights = static_cast<int>(f.lights.size());
   set_directional_distance(boxes, f.lights);
   // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
   if (f.lights.empty()) f.lights.emplace_back();
-  if (f.nodes.empty()) f.nodes.emplace_back();
+  if (f.nodes.empty()) f.nodes.resize(wide_units(f.bvh_width));
   if (f.instances.empty()) f.instances.emplace_back();
   if (f.instance_textures.empty()) f.instance_textures.emplace_back();
   if (f.instance_lights.empty()) f.instance_lights.emplace_back();

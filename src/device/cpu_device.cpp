@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <stdexcept>
+#include <string>
 
 #include "device/cpu_kernel.h"
 #include "util/parallel_for.h"
@@ -21,6 +23,12 @@ void CpuDevice::check_memory(const FlatScene& flat, uint64_t host_bytes) const {
 }
 
 DeviceLoadInfo CpuDevice::load(const FlatScene& flat) {
+  if (!supports_bvh_width(flat.bvh_width))
+    throw std::runtime_error("cpu-reference: the scene was flattened for " +
+                             std::to_string(flat.bvh_width) +
+                             "-wide BVH nodes, but the CPU "
+                             "reference is compiled for " +
+                             std::to_string(RT_BVH_WIDTH));
   flat_ = &flat;
   view_ = flat.view();
   const size_t pixels = static_cast<size_t>(flat.header.camera.width) * flat.header.camera.height;

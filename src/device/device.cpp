@@ -30,6 +30,15 @@ std::string format_bytes(uint64_t bytes) {
   return text;
 }
 
+int resolve_bvh_width(int asked, const RenderDevice& device) {
+  if (asked == 0) return device.bvh_width();
+  if (!device.supports_bvh_width(asked))
+    throw std::runtime_error("--bvh-width " + std::to_string(asked) + ": " + device.name() +
+                             " renders " + std::to_string(device.bvh_width()) +
+                             "-wide BVH nodes only");
+  return asked;
+}
+
 void check_memory_limit(const FlatScene& flat, uint64_t bytes, uint64_t limit,
                         const std::string& what, const std::string& limit_text) {
   if (bytes <= limit) return;
@@ -76,8 +85,7 @@ RenderDevice* DevicePool::get(const DeviceOptions& options, std::string* why) {
   const std::string key = std::to_string(static_cast<int>(options.kind)) + "|" +
                           options.cl_selector + "|" + std::to_string(options.kernel_cache) +
                           std::to_string(options.generic_kernel) + "|" +
-                          std::to_string(options.threads) + "|" +
-                          std::to_string(options.gpu_rank);
+                          std::to_string(options.threads) + "|" + std::to_string(options.gpu_rank);
   auto it = devices_.find(key);
   if (it == devices_.end()) {
     Entry e;

@@ -54,6 +54,11 @@ class RenderDevice {
   virtual std::string name() const = 0;
   // Whether the shared math can run in double here (--precision double; auto picks it).
   virtual bool has_double() const { return false; }
+  // The BVH width (BvhOptions::width) this device renders fastest, for scenes flattened for
+  // it, and whether it can render `width` at all. By default this build's RT_BVH_WIDTH
+  // only, which the CPU reference is compiled for.
+  virtual int bvh_width() const { return RT_BVH_WIDTH; }
+  virtual bool supports_bvh_width(int width) const { return width == RT_BVH_WIDTH; }
   // Checks, before anything is allocated, that rendering `flat`'s camera fits: the device's
   // buffers (scene arrays and film) in its memory, and `host_bytes` more (the caller's
   // copies and outputs) in the host's. Throws std::runtime_error, one line naming the
@@ -74,6 +79,10 @@ class RenderDevice {
   virtual void read_accum(std::vector<PixelAccum>* accum) = 0;
   virtual void read_primary(std::vector<PrimaryInfo>* primary) = 0;
 };
+
+// The BVH width to flatten a scene with for `device`: its own (RenderDevice::bvh_width)
+// for 0, else `asked` when it can render that, else std::runtime_error naming both.
+int resolve_bvh_width(int asked, const RenderDevice& device);
 
 // Bytes of one pixel's film (accumulator and first-hit facts), on any device.
 constexpr uint64_t kFilmBytesPerPixel = sizeof(PixelAccum) + sizeof(PrimaryInfo);

@@ -21,6 +21,7 @@ TileResult TileWorker::render(const TileTask& task) {
     std::string notice;  // Rank 0 prints the notice of its own device.
     render.precision =
         resolve_precision(render.precision, device_->has_double(), device_->name(), &notice);
+    render.bvh.width = resolve_bvh_width(render.bvh.width, *device_);
     flat_ = flatten_scene(scene_.desc, render);
     scene_index_ = task.scene;
     camera_ = -1;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "bvh_lanes.h"
 #include "cl/features.h"
 #include "cl_scene_buffers.h"
 #include "device/cl/cl_platform.h"
@@ -33,6 +34,11 @@ class ClDevice final : public RenderDevice {
 
   std::string name() const override { return name_; }
   bool has_double() const override { return programs_->has_double(); }
+  // PoCL on an x86 CPU traverses 8-wide nodes faster than 4-wide ones, where the CPU
+  // reference (GCC) is faster with 4 (docs/figures_history.md, 2026-12-03, session 14).
+  // No GPU has been measured: it keeps the 4-wide nodes every device used before.
+  int bvh_width() const override { return programs_->is_cpu() ? 8 : std::max(4, RT_BVH_WIDTH); }
+  bool supports_bvh_width(int width) const override { return valid_bvh_width(width); }
   void check_memory(const FlatScene& flat, uint64_t host_bytes) const override;
   int row_alignment() const override { return program_ ? static_cast<int>(program_->local_y) : 1; }
   DeviceLoadInfo load(const FlatScene& flat) override;
@@ -104,9 +110,11 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
   program_ = nullptr;
   check_memory(flat, 0);
   DeviceLoadInfo info;
-  info.build_options = programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features,
-                                              flat.fast_math, flat.double_precision);
-  ClProgram& p = programs_->get(info.build_options, &info.compile_ms, &info.cache_hit);
+  info.build_options =
+      programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, flat.fast_math,
+                             flat.double_precision, flat.bvh_width);
+  ClProgram& p =
+      programs_->get(info.build_options, flat.bvh_width, &info.compile_ms, &info.cache_hit);
   auto since = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
   };

@@ -68,12 +68,12 @@ void check_precision_support(const std::string& device_name, bool has_fp64, bool
                              "it; use --precision float or --device cpu");
 }
 
-std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision) const {
+std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision,
+                                        int bvh_width) const {
   check_precision_support(name_, fp64_, double_precision);
   std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
-  // The node and triangle-block layouts the host built (cl/simd.h): a host compiled with
-  // another RT_BVH_WIDTH than the kernel's default must not hand it arrays of that width.
-  o += " -DRT_BVH_WIDTH=" + std::to_string(RT_BVH_WIDTH);
+  // The width of the nodes and triangle blocks the host built (cl/simd.h, src/bvh_lanes.h).
+  o += " -DRT_BVH_WIDTH=" + std::to_string(bvh_width);
   if (double_precision) o += " -DRT_REAL_DOUBLE=1";
   // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/film.h).
   if (cpu_) o += " -DRT_CL_CPU_DEVICE=1";
@@ -150,7 +150,8 @@ cl::Program ClProgramCache::build(const std::string& source, const std::string& 
   return p;
 }
 
-ClProgram& ClProgramCache::get(const std::string& options, double* compile_ms, bool* cache_hit) {
+ClProgram& ClProgramCache::get(const std::string& options, int bvh_width, double* compile_ms,
+                               bool* cache_hit) {
   auto it = programs_.find(options);
   if (it != programs_.end()) {
     *compile_ms = 0;
@@ -176,7 +177,7 @@ ClProgram& ClProgramCache::get(const std::string& options, double* compile_ms, b
       p.local_y = std::max<size_t>(1, std::min(p.local_y, max_items[1]));
     }
     // Host and device must agree on every struct before anything is uploaded.
-    check_scene_layout(context_, queue_, p.program, name_);
+    check_scene_layout(context_, queue_, p.program, name_, bvh_width);
   } catch (const cl::Error& e) {
     throw std::runtime_error("OpenCL: " + describe_cl_error(e) + " on " + name_);
   }
