@@ -22,12 +22,15 @@ static_assert(sizeof(TriangleBlock) == 40 * RT_BVH_WIDTH &&
                   offsetof(TriangleBlock, first) == 36 * RT_BVH_WIDTH,
               "TriangleBlock layout");
 
+// The widest node the host builds (BvhOptions::width: 4 or 8).
+constexpr int kMaxBvhWidth = 8;
+
 // Array elements per node or block of `width` lanes (a multiple of RT_BVH_WIDTH).
 inline size_t wide_units(int width) { return static_cast<size_t>(width / RT_BVH_WIDTH); }
 
 // Whether nodes of `width` lanes can be built by this host: 4 or 8, a multiple of its own.
 inline bool valid_bvh_width(int width) {
-  return (width == 4 || width == 8) && width % RT_BVH_WIDTH == 0;
+  return (width == 4 || width == kMaxBvhWidth) && width % RT_BVH_WIDTH == 0;
 }
 
 // The nodes of one width in a FlatScene's node array.
@@ -92,7 +95,7 @@ class WideBlock {
 
  private:
   int width_;
-  char bytes_[40 * 8];
+  char bytes_[40 * kMaxBvhWidth];
 };
 
 }  // namespace rt

@@ -29,7 +29,7 @@ class Collapser {
     // The children: open the interior child of largest surface area until the node is
     // full (Wald, Benthin and Boulos 2008), so big boxes are tested early, as one group.
     // They are copies, so that two leaves can be made one.
-    BinaryBvhNode kids[8];
+    BinaryBvhNode kids[kMaxBvhWidth];
     int n = 0;
     if (node.count > 0) {
       kids[n++] = node;
