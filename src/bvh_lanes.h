@@ -16,10 +16,18 @@
 
 namespace rt {
 
-static_assert(sizeof(BvhNode) == 32 * RT_BVH_WIDTH && offsetof(BvhNode, child) == 24 * RT_BVH_WIDTH,
+// Bytes per lane: a node holds eight vectors of 4-byte lanes (six bounds, the children,
+// padding), a block ten (nine coordinates, then `first` and padding).
+constexpr size_t kNodeBytesPerLane = 32;
+constexpr size_t kBlockBytesPerLane = 40;
+constexpr int kNodeChildVector = 6;   // After the six bounds.
+constexpr int kBlockFirstVector = 9;  // After the nine coordinates.
+
+static_assert(sizeof(BvhNode) == kNodeBytesPerLane * RT_BVH_WIDTH &&
+                  offsetof(BvhNode, child) == 4 * kNodeChildVector * RT_BVH_WIDTH,
               "BvhNode layout");
-static_assert(sizeof(TriangleBlock) == 40 * RT_BVH_WIDTH &&
-                  offsetof(TriangleBlock, first) == 36 * RT_BVH_WIDTH,
+static_assert(sizeof(TriangleBlock) == kBlockBytesPerLane * RT_BVH_WIDTH &&
+                  offsetof(TriangleBlock, first) == 4 * kBlockFirstVector * RT_BVH_WIDTH,
               "TriangleBlock layout");
 
 // The widest node the host builds (BvhOptions::width: 4 or 8).
@@ -50,29 +58,31 @@ class WideNodes {
   void reserve(size_t nodes) { v_.reserve(nodes * wide_units(width_)); }
   size_t capacity() const { return v_.capacity() / wide_units(width_); }
 
-  // Vector `vec` of the node: bounds 0-5 (lo x, y, z, hi x, y, z), 6 the children.
-  void set_bound(size_t node, int vec, int lane, float value) { put(node, vec, lane, &value); }
-  void set_child(size_t node, int lane, int ref) { put(node, 6, lane, &ref); }
+  // Vector `vec` of the node: bounds 0-5 (lo x, y, z, hi x, y, z), then the children.
+  void set_bound(size_t node, int vec, int lane, float value) {
+    std::memcpy(bytes() + offset(node, vec, lane), &value, sizeof value);
+  }
+  void set_child(size_t node, int lane, int ref) {
+    std::memcpy(bytes() + offset(node, kNodeChildVector, lane), &ref, sizeof ref);
+  }
   int child(size_t node, int lane) const {
     int ref;
-    std::memcpy(&ref, lane_address(node, 6, lane), sizeof ref);
+    std::memcpy(&ref, bytes() + offset(node, kNodeChildVector, lane), sizeof ref);
     return ref;
   }
   float bound(size_t node, int vec, int lane) const {
     float value;
-    std::memcpy(&value, lane_address(node, vec, lane), sizeof value);
+    std::memcpy(&value, bytes() + offset(node, vec, lane), sizeof value);
     return value;
   }
 
  private:
-  size_t node_bytes() const { return 32 * static_cast<size_t>(width_); }
-  const char* lane_address(size_t node, int vec, int lane) const {
-    return reinterpret_cast<const char*>(v_.data()) + node * node_bytes() +
-           4 * (static_cast<size_t>(vec) * width_ + lane);
+  size_t node_bytes() const { return kNodeBytesPerLane * width_; }
+  size_t offset(size_t node, int vec, int lane) const {
+    return node * node_bytes() + 4 * (static_cast<size_t>(vec) * width_ + lane);
   }
-  void put(size_t node, int vec, int lane, const void* value) {
-    std::memcpy(const_cast<char*>(lane_address(node, vec, lane)), value, 4);
-  }
+  char* bytes() { return reinterpret_cast<char*>(v_.data()); }
+  const char* bytes() const { return reinterpret_cast<const char*>(v_.data()); }
 
   PageAlignedVector<BvhNode>& v_;
   int width_;
@@ -86,16 +96,16 @@ class WideBlock {
   void set(int j, int lane, float value) {
     std::memcpy(bytes_ + 4 * (j * width_ + lane), &value, 4);
   }
-  void set_first(int first) { std::memcpy(bytes_ + 36 * width_, &first, 4); }
+  void set_first(int first) { std::memcpy(bytes_ + 4 * kBlockFirstVector * width_, &first, 4); }
   void append_to(PageAlignedVector<TriangleBlock>& blocks) const {
     size_t at = blocks.size();
     blocks.resize(at + wide_units(width_));
-    std::memcpy(static_cast<void*>(&blocks[at]), bytes_, 40 * static_cast<size_t>(width_));
+    std::memcpy(static_cast<void*>(&blocks[at]), bytes_, kBlockBytesPerLane * width_);
   }
 
  private:
   int width_;
-  char bytes_[40 * kMaxBvhWidth];
+  char bytes_[kBlockBytesPerLane * kMaxBvhWidth];
 };
 
 }  // namespace rt

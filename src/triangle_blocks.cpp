@@ -2,7 +2,6 @@
 
 #include "bvh_lanes.h"
 
-#include <cstring>
 #include <stdexcept>
 #include <string>
 

@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cl/simd.h"
 #include "cl_scene_buffers.h"
 #include "io/file_util.h"
 
