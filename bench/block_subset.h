@@ -10,10 +10,10 @@
 #include <thread>
 #include <vector>
 
-#include "device/cpu_kernel.h"
-#include "flat_scene.h"
+#include "device/cpu/cpu_kernel.h"
+#include "prepare/flat_scene.h"
 #include "image/tonemap.h"
-#include "image_metrics.h"
+#include "compare/image_metrics.h"
 #include "io/png_io.h"
 
 namespace rt::bench {

@@ -1,8 +1,8 @@
 // The gap to the practical limit: the camera rays of a scene traced by this project's wide
-// BVH (cl/bvh.h, the CPU reference's very code) and by Embree 3 (BVH quality HIGH, no
+// BVH (cl/bvh/bvh.h, the CPU reference's very code) and by Embree 3 (BVH quality HIGH, no
 // culling), single rays (rtcIntersect1) and 16-ray packets of 4x4 pixels
 // (rtcIntersect16), in one thread, in Mrays per CPU-second of that thread. The rays are
-// those the renderer casts (cl/camera.h, GenerateCameraSample), and every tracer's hit
+// those the renderer casts (cl/camera/camera.h, GenerateCameraSample), and every tracer's hit
 // distances are compared with ours, so what is timed is checked to be the same work.
 // With --build, also the BVH build at 1 and 2 threads: ours (flatten_scene, all the
 // renderer pays before the first sample) against Embree's HIGH commit, wall and CPU time,
@@ -26,14 +26,14 @@
 #include <string>
 #include <vector>
 
-#include "cl/camera.h"
-#include "cl/intersect.h"
-#include "device/cpu_kernel.h"
-#include "errors.h"
-#include "flat_scene.h"
-#include "scene.h"
+#include "cl/camera/camera.h"
+#include "cl/bvh/intersect.h"
+#include "device/cpu/cpu_kernel.h"
+#include "util/errors.h"
+#include "prepare/flat_scene.h"
+#include "scene/scene.h"
 #include "util/args.h"
-#include "world_frame.h"
+#include "prepare/world_frame.h"
 
 namespace {
 
@@ -93,7 +93,7 @@ RaySet CameraRays(const rt::FlatScene& flat) {
 }
 
 // The scene's meshes as triangles of the frame the rays are in (the camera's, whose origin
-// is the world point `eye`: src/world_frame.h) in one Embree scene of quality HIGH.
+// is the world point `eye`: src/prepare/world_frame.h) in one Embree scene of quality HIGH.
 RTCScene EmbreeScene(RTCDevice device, const rt::SceneDesc& scene, rt::Vec3d eye) {
   RTCScene es = rtcNewScene(device);
   rtcSetSceneBuildQuality(es, RTC_BUILD_QUALITY_HIGH);

@@ -31,12 +31,12 @@
 #include <vector>
 
 #include "block_subset.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
-#include "image_metrics.h"
+#include "compare/image_metrics.h"
 #include "io/png_io.h"
-#include "render.h"
+#include "integrator/render.h"
 
 namespace {
 

@@ -34,7 +34,7 @@
 
 #include "block_subset.h"
 #include "image/read_hdr.h"
-#include "render.h"
+#include "integrator/render.h"
 
 namespace {
 

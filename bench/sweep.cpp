@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "family.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "sweep_grid.h"
 #include "sweep_run.h"
 #include "util/args.h"

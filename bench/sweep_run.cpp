@@ -11,7 +11,7 @@
 #include <functional>
 #include <stdexcept>
 
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "integrator/render_scheduler.h"
 
 namespace sweep {

@@ -8,8 +8,8 @@
 
 #include "device/device.h"
 #include "io/moments.h"
-#include "render.h"
-#include "scene.h"
+#include "integrator/render.h"
+#include "scene/scene.h"
 
 namespace sweep {
 

@@ -194,7 +194,7 @@ if [ -n "$embree" ]; then
   echo "The same camera rays traced by Embree 3 (BVH quality HIGH, no culling), Mrays per"
   echo "CPU-second of one thread; \"renderer\" is the CPU reference's rate above (a whole"
   echo "sample: camera ray, traversal, surface, film; all threads), \"renderer, 1 thread\" the"
-  echo "same with --threads 1, timed as Embree is; \"traversal alone\" our cl/bvh.h called"
+  echo "same with --threads 1, timed as Embree is; \"traversal alone\" our cl/bvh/bvh.h called"
   echo "on the rays as Embree is; agreement: share of rays with the same hit distance (rel. 1e-4)"
   echo "ours vs Embree single, Embree single vs packets."
   echo

@@ -1,5 +1,5 @@
 // Every feature bit of the renderer, in one place. The host derives the set a scene
-// needs (scene_features in src/flat_scene.cpp); the kernel is compiled with RT_KERNEL_FEATURES set
+// needs (scene_features in src/prepare/flat_scene.cpp); the kernel is compiled with RT_KERNEL_FEATURES set
 // to that set, so code for an absent feature is removed by the compiler. The CPU reference reads
 // the same bits at run time from the scene header. A bit that is on when the scene does
 // not need it never changes the image, only the speed.

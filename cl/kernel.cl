@@ -1,9 +1,9 @@
 // The OpenCL entry points: `render`, one work-item per pixel running a slice of that
 // pixel's samples, and `rt_sizes`, the device's struct sizes for the host's layout check.
 // All of the maths lives in the shared headers; the scene's arrays are the list of
-// data_arrays.h, passed after the header in that order (src/cl_scene_buffers.cpp binds them).
+// data_arrays.h, passed after the header in that order (src/device/cl/cl_scene_buffers.cpp binds them).
 #include "data_arrays.h"
-#include "film.h"
+#include "film/film.h"
 
 #define RT_KERNEL_PARAM(Type, name) __global const Type *name,
 #define RT_KERNEL_FILL(Type, name) sd.name = name;

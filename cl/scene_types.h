@@ -1,14 +1,14 @@
 // The flattened scene as both devices read it. The host fills these arrays
-// (src/flat_scene.cpp) and uploads them unchanged; every struct is a multiple of 16 bytes
+// (src/prepare/flat_scene.cpp) and uploads them unchanged; every struct is a multiple of 16 bytes
 // with float3/float4 members first, so C++ and OpenCL C lay them out identically
-// (checked by static_asserts in src/flat_scene.cpp and, on the device, by rt_sizes).
+// (checked by static_asserts in src/prepare/flat_scene.cpp and, on the device, by rt_sizes).
 #ifndef RT_SCENE_TYPES_H
 #define RT_SCENE_TYPES_H
 
 #include "compat.h"
 #include "data_arrays.h"
 #include "features.h"
-#include "simd.h"
+#include "bvh/simd.h"
 #include "texture/texture_types.h"
 
 // A material's parameters as the file gives them; cl/material/material.h evaluates them
@@ -77,7 +77,7 @@ typedef struct Camera {
   float3 position;
   float3 u, v, w;  // Right, up, and backwards (w = -gaze), orthonormal.
   // The course's camera rays (RT_FLAG_COURSE_CAMERA): its eye, film corner q and u, v in
-  // world space, each rounded as its float arithmetic rounds them (src/course_camera.cpp).
+  // world space, each rounded as its float arithmetic rounds them (src/prepare/course_camera.cpp).
   float3 course_eye, course_q, course_u, course_v;
   float left, right, bottom, top;
   float near_distance;
@@ -97,7 +97,7 @@ typedef struct Camera {
 #define RT_INSTANCE_MOVING 4
 // Set with RT_INSTANCE_TRANSFORMED when world_to_object's linear part is exactly the
 // identity (1.0f on the diagonal, +0.0f elsewhere): the transform moves origins only, and
-// every such instance turns a direction into the same vector (cl/bvh.h shares its setup).
+// every such instance turns a direction into the same vector (cl/bvh/bvh.h shares its setup).
 #define RT_INSTANCE_TRANSLATION 8
 
 // One object of the top level: a mesh's bottom-level BVH or the unit sphere, seen
@@ -117,7 +117,7 @@ typedef struct Instance {
 } Instance;
 
 // A node of the wide BVH: the boxes of up to RT_BVH_WIDTH children (the width the host
-// built this device's arrays with, src/bvh_lanes.h), one lane per child,
+// built this device's arrays with, src/bvh/bvh_lanes.h), one lane per child,
 // stored as one vector per bound (structure of arrays) so one node test checks every child
 // at once with aligned vector loads. child[i] is a node index (>= 0), RT_BVH_EMPTY for an
 // unused lane, or a leaf reference made by RtLeafRef (count triangles from the block
@@ -138,11 +138,11 @@ typedef struct RT_ALIGN_NODE BvhNode {
 } BvhNode;
 
 // RT_BVH_WIDTH triangles of one bottom-level leaf, structure of arrays, for the block test
-// (cl/shapes.h, IntersectTriangleBlock): v[3 * k + a] holds axis a of vertex k, lane i the
+// (cl/geometry/shapes.h, IntersectTriangleBlock): v[3 * k + a] holds axis a of vertex k, lane i the
 // triangle `first + i` of `triangles`. A leaf of n triangles is ceil(n / RT_BVH_WIDTH)
 // consecutive blocks; lanes past its end hold an all-zero triangle, which the watertight
 // test always rejects (its determinant is exactly 0). The bottom-level leaf references
-// (RtLeafRef) count triangles from their first block (src/triangle_blocks.cpp).
+// (RtLeafRef) count triangles from their first block (src/bvh/triangle_blocks.cpp).
 typedef struct TriangleBlock {
   LaneFloat v[9];
   int first;
@@ -178,16 +178,16 @@ typedef struct TriangleNormals {
 // the ray came from, not from the side of its normal as modelled (cl/material/mirror.h).
 #define RT_FLAG_FACING_REFLECTION 512
 // --ray-offset robust: spawned rays start the scene's epsilon plus a few ulps of the
-// surface's scale off it (cl/ray.h), not the scene's epsilon alone as the course's rays do.
+// surface's scale off it (cl/geometry/ray.h), not the scene's epsilon alone as the course's rays do.
 #define RT_FLAG_ROBUST_OFFSET 1024
 #define RT_ROBUST_OFFSET(sd) (((sd)->header->flags & RT_FLAG_ROBUST_OFFSET) != 0)
 // Camera rays as the course's renderer computes them: in world space, in float
-// (cl/camera.h, CourseCameraDirection).
+// (cl/camera/camera.h, CourseCameraDirection).
 #define RT_FLAG_COURSE_CAMERA 2048
 // Shadow rays leave along the geometric normal instead of the course's shading normal.
 #define RT_FLAG_GEOMETRIC_OFFSET 4096
 // --hit-point ray: the surface point is the ray's origin + t * direction, as the course's
-// renderer forms it, not rebuilt from the primitive (cl/surface.h).
+// renderer forms it, not rebuilt from the primitive (cl/geometry/surface.h).
 #define RT_FLAG_RAY_HIT_POINT 8192
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "family.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "io/moments.h"
 #include "paired.h"
 #include "planted_bias.h"
-#include "device/cpu_device.h"
+#include "device/cpu/cpu_device.h"
 #include "integrator/render_scheduler.h"
 #include "util/args.h"
 #include "welch.h"

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
-#include "errors.h"
-#include "flat_scene.h"
-#include "ply.h"
-#include "scene.h"
+#include "app/cli.h"
+#include "util/errors.h"
+#include "prepare/flat_scene.h"
+#include "scene/ply.h"
+#include "scene/scene.h"
 
 namespace rt {
 namespace {

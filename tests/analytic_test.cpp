@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 #include "support/test_scene.h"
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "bvh_build.h"
+#include "bvh/bvh_build.h"
 #include "support/geometry_harness.h"
 
 namespace rt {

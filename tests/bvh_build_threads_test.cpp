@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "bvh_build.h"
-#include "flat_scene.h"
+#include "bvh/bvh_build.h"
+#include "prepare/flat_scene.h"
 #include "support/geometry_harness.h"
 
 namespace rt {

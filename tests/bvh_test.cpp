@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "bvh_build.h"
-#include "bvh_wide.h"
+#include "bvh/bvh_build.h"
+#include "bvh/bvh_wide.h"
 
 namespace rt {
 namespace {

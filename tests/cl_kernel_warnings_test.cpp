@@ -1,8 +1,8 @@
 // The kernel compiles without a single warning on the OpenCL device, for the feature sets at
 // both ends (none compiled in, all compiled in), for a CPU device's and a GPU's code paths
-// (RT_CL_CPU_DEVICE, cl/film.h) and for both node widths. PoCL copies a build's warnings to
+// (RT_CL_CPU_DEVICE, cl/film/film.h) and for both node widths. PoCL copies a build's warnings to
 // stderr itself, where `--quiet` cannot stop them: a warning in the kernel is noise in every
-// user's terminal (the constant operand of && that cl/camera_batch.h once had, with depth of
+// user's terminal (the constant operand of && that cl/camera/camera_batch.h once had, with depth of
 // field compiled out, printed "1 warning generated." on each kernel compile).
 #define CL_HPP_ENABLE_EXCEPTIONS
 #include <gtest/gtest.h>
@@ -43,7 +43,7 @@ TEST(OpenClKernel, BuildsWithoutWarnings) {
   cl::Device device;
   if (!FirstDevice(&device)) GTEST_SKIP() << "no OpenCL device";
   cl::Context context(device);
-  // Both node widths (cl/simd.h): the suite's host builds only the default, 4, so the
+  // Both node widths (cl/bvh/simd.h): the suite's host builds only the default, 4, so the
   // kernel's width-8 code would otherwise go uncompiled.
   for (int width : {4, 8}) {
     for (int features : {0, (int)RT_FEATURE_ALL}) {

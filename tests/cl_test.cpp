@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
-#include "bvh_lanes.h"
+#include "bvh/bvh_lanes.h"
 #include "cl/features.h"
-#include "cl/simd.h"
-#include "cl_scene_buffers.h"
+#include "cl/bvh/simd.h"
+#include "device/cl/cl_scene_buffers.h"
 #include "device/cl/cl_device.h"
 #include "device/cl/cl_program.h"
-#include "device/cpu_device.h"
-#include "scene.h"
+#include "device/cpu/cpu_device.h"
+#include "scene/scene.h"
 #include "support/device_harness.h"
 #include "support/test_scene.h"
 
@@ -196,7 +196,7 @@ TEST(OpenCl, StructLayoutsMatchTheDevice) {
 
 // The OpenCL device on a CPU traverses 8-wide nodes (RenderDevice::bvh_width), the CPU
 // reference 4-wide ones: the images must still be the same bytes, which ties settled by
-// index rather than by visiting order make them (ClosestHitWins in cl/bvh.h). Scenes of
+// index rather than by visiting order make them (ClosestHitWins in cl/bvh/bvh.h). Scenes of
 // meshes, instances and spheres, all three renders with the same seed.
 TEST(OpenCl, EveryBvhWidthRendersTheSameImage) {
   REQUIRE_DEVICE(r);

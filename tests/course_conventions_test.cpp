@@ -5,8 +5,8 @@
 // they stop being used.
 #include <gtest/gtest.h>
 
-#include "course_camera.h"
-#include "flat_scene.h"
+#include "prepare/course_camera.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 #include "support/test_scene.h"
 

@@ -1,4 +1,4 @@
-// The CPU reference's float kernel compiled for AVX2 (src/device/cpu_kernel_avx2.cpp)
+// The CPU reference's float kernel compiled for AVX2 (src/device/cpu/cpu_kernel_avx2.cpp)
 // against the baseline build of the same headers: every pixel's sums, sample counts and
 // primary hit must be bit-identical, since only the instruction encoding differs (FP
 // contraction is off for both).
@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <string>
 
-#include "device/cpu_kernel.h"
-#include "flat_scene.h"
-#include "scene.h"
+#include "device/cpu/cpu_kernel.h"
+#include "prepare/flat_scene.h"
+#include "scene/scene.h"
 
 namespace {
 

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "cl/light/environment_map.h"
-#include "errors.h"
-#include "flat_scene.h"
+#include "util/errors.h"
+#include "prepare/flat_scene.h"
 #include "io/image_output.h"
-#include "render.h"
-#include "scene.h"
+#include "integrator/render.h"
+#include "scene/scene.h"
 #include "support/device_harness.h"
 
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-// The environment light (cl/light/environment.h, environment_map.h, src/flat_environment.cpp)
+// The environment light (cl/light/environment.h, environment_map.h, src/prepare/flat_environment.cpp)
 // against closed forms: the mappings of known directions to known texels, the importance
 // sampler against its density (chi-square), a constant environment over a diffuse floor,
 // one bright texel against a directional light of the same power, and the two devices
@@ -13,8 +13,8 @@
 
 #include "cl/light/light.h"
 #include "cl/material/brdf.h"
-#include "flat_scene.h"
-#include "render.h"
+#include "prepare/flat_scene.h"
+#include "integrator/render.h"
 #include "support/device_harness.h"
 
 namespace rt {

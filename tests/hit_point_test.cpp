@@ -1,4 +1,4 @@
-// --hit-point ray|surface (cl/surface.h): by default (`ray`) a hit point is formed as
+// --hit-point ray|surface (cl/geometry/surface.h): by default (`ray`) a hit point is formed as
 // origin + t * direction, as the course's renderer does, which decides some pixels of its
 // images (docs/course_pixel_residue.md); `surface` rebuilds it from the primitive, for
 // tools/explain_ensemble.py's member. The option changes the point and nothing else, and

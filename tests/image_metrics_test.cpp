@@ -1,5 +1,5 @@
 // Tests for the image comparison metrics on small hand-made images with known answers.
-#include "image_metrics.h"
+#include "compare/image_metrics.h"
 
 #include <gtest/gtest.h>
 

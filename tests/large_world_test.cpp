@@ -1,4 +1,4 @@
-// Large-world coordinates (src/world_frame.h): the devices work in float, in the frame of
+// Large-world coordinates (src/prepare/world_frame.h): the devices work in float, in the frame of
 // the camera, with each mesh's vertices relative to a point of its own. A scene moved far
 // from the world's origin must therefore render as it does at the origin, on both devices,
 // and the two devices must agree bit for bit at equal seeds.

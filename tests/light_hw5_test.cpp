@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "cl/light/light.h"
-#include "flat_scene.h"
-#include "render.h"
+#include "prepare/flat_scene.h"
+#include "integrator/render.h"
 #include "support/device_harness.h"
 
 namespace rt {

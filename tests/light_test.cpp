@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "cl/light/light.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 
 namespace rt {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "cl/material/brdf.h"
-#include "errors.h"
-#include "scene.h"
+#include "util/errors.h"
+#include "scene/scene.h"
 #include "support/test_scene.h"
 
 namespace rt {

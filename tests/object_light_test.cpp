@@ -14,8 +14,8 @@
 #include "cl/light/emission.h"
 #include "cl/light/light.h"
 #include "cl/util/hash.h"
-#include "errors.h"
-#include "flat_scene.h"
+#include "util/errors.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 #include "support/test_scene.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "family.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "io/moments.h"
 #include "paired.h"
 #include "support/device_harness.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 #include "support/path_scene.h"
 

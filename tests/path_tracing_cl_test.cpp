@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include "flat_scene.h"
-#include "scene.h"
+#include "prepare/flat_scene.h"
+#include "scene/scene.h"
 #include "support/device_harness.h"
 
 namespace {

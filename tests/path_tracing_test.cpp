@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "cl/material/brdf.h"
-#include "errors.h"
-#include "flat_scene.h"
+#include "util/errors.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 #include "support/pixel_estimate.h"
 #include "support/test_scene.h"

@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "errors.h"
-#include "ply.h"
+#include "util/errors.h"
+#include "scene/ply.h"
 #include "support/ply_writer.h"
 
 namespace rt {

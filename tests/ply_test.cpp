@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "errors.h"
-#include "ply.h"
+#include "util/errors.h"
+#include "scene/ply.h"
 #include "support/ply_writer.h"
 
 namespace rt {

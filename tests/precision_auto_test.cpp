@@ -1,5 +1,5 @@
 // --precision auto: double where the device computes it, else float with a notice. The
-// decision is one function (src/precision.h), tested here with made-up capabilities; the
+// decision is one function (src/device/precision.h), tested here with made-up capabilities; the
 // devices report theirs (the CPU reference always, PoCL through cl_khr_fp64), and the
 // executable renders auto exactly as it renders the precision it resolved to.
 #include <gtest/gtest.h>
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "app/cli.h"
 #include "device/device.h"
-#include "precision.h"
+#include "device/precision.h"
 #include "support/cli_harness.h"
 
 namespace rt {

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "device/cl/cl_program.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 
 namespace {

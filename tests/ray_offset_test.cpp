@@ -1,4 +1,4 @@
-// OffsetRayOrigin (cl/ray.h): with --ray-offset robust a spawned ray's origin leaves the
+// OffsetRayOrigin (cl/geometry/ray.h): with --ray-offset robust a spawned ray's origin leaves the
 // surface's plane on the normal side at every scale, by the stated number of ulps; by
 // default (the course's convention) it moves by the scene's epsilon alone.
 #include <gtest/gtest.h>

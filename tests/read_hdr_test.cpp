@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/read_hdr.h"
 
 namespace {

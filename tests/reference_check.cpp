@@ -21,14 +21,14 @@
 #include <thread>
 #include <vector>
 
-#include "cli.h"
-#include "device/cpu_kernel.h"
-#include "flat_scene.h"
+#include "app/cli.h"
+#include "device/cpu/cpu_kernel.h"
+#include "prepare/flat_scene.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
-#include "image_metrics.h"
+#include "compare/image_metrics.h"
 #include "io/png_io.h"
-#include "render.h"
+#include "integrator/render.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 
 namespace {

@@ -1,9 +1,9 @@
 // The camera ray's light sample made with the camera sample (CacheCameraRaySamples in
-// cl/sampler.h) must be the very bits RaySample2D draws without the cache, or the images
+// cl/sampling/sampler.h) must be the very bits RaySample2D draws without the cache, or the images
 // would move.
 #include <gtest/gtest.h>
 
-#include "cl/sampler.h"
+#include "cl/sampling/sampler.h"
 
 namespace {
 

@@ -1,11 +1,11 @@
-// The camera sample's stratum row as a multiply (StrataMagic, StratumRow in cl/sampler.h):
+// The camera sample's stratum row as a multiply (StrataMagic, StratumRow in cl/sampling/sampler.h):
 // it must give the division's integer for every stratum of every pattern it is used for,
 // or the two devices' pixels would move.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 
-#include "cl/sampler.h"
+#include "cl/sampling/sampler.h"
 
 namespace {
 

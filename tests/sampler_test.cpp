@@ -8,7 +8,7 @@
 #include <set>
 #include <vector>
 
-#include "cl/sampler.h"
+#include "cl/sampling/sampler.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The structure checks of src/scene_schema.cpp: unsupported features are errors, unknown
+// The structure checks of src/scene/scene_schema.cpp: unsupported features are errors, unknown
 // ones warnings (one per kind), repeats and repeated ids errors naming both lines, and
 // --strict; and the course's own files, which must keep loading as before.
 #include <gtest/gtest.h>
@@ -8,9 +8,9 @@
 #include <set>
 #include <string>
 
-#include "errors.h"
-#include "scene.h"
-#include "scene_schema.h"
+#include "util/errors.h"
+#include "scene/scene.h"
+#include "scene/scene_schema.h"
 #include "support/test_scene.h"
 
 namespace rt {

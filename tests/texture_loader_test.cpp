@@ -7,10 +7,10 @@
 #include <fstream>
 #include <string>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/read_ldr.h"
 #include "io/png_io.h"
-#include "scene.h"
+#include "scene/scene.h"
 #include "support/test_scene.h"
 
 namespace rt {

@@ -8,7 +8,7 @@
 
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
-#include "image_metrics.h"
+#include "compare/image_metrics.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // cl/util/transcendental.h in double (`--precision double`), where it replaces the
 // libraries' exp, pow, sin and cos too. The header compiles inside its own namespace with
-// RT_REAL_DOUBLE, as src/device/cpu_kernel_double.cpp does.
+// RT_REAL_DOUBLE, as src/device/cpu/cpu_kernel_double.cpp does.
 #define RT_REAL_DOUBLE 1
 
 #include <cmath>

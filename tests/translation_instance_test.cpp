@@ -1,4 +1,4 @@
-// Instances moved by a translation alone (RT_INSTANCE_TRANSLATION, cl/bvh.h): they share the
+// Instances moved by a translation alone (RT_INSTANCE_TRANSLATION, cl/bvh/bvh.h): they share the
 // world ray's direction setup and add their translation to the world origin, and must give
 // exactly the hits of the general instance path (TransformPoint, TransformVector and a node
 // ray of their own), bit for bit, including rays with zero and -0 components.
@@ -178,7 +178,7 @@ TEST(TranslationInstance, HitsAreTheGeneralPathsBitForBit) {
 }
 
 // The kernel compiles the shared-direction path only when the scene header says a mesh
-// needs it (RT_FEATURE_WORLD_MESHES, cl/bvh.h); the bit must be set exactly when some mesh
+// needs it (RT_FEATURE_WORLD_MESHES, cl/bvh/bvh.h); the bit must be set exactly when some mesh
 // instance is untransformed or translated alone, or such an instance would be traced with
 // the general path's arithmetic in the kernel and the world's in the CPU reference.
 TEST(TranslationInstance, WorldMeshesFeatureIsSetExactlyForSuchMeshes) {

@@ -1,4 +1,4 @@
-// IntersectTriangleBlock, the test of RT_BVH_WIDTH triangles at once (cl/shapes.h), against
+// IntersectTriangleBlock, the test of RT_BVH_WIDTH triangles at once (cl/geometry/shapes.h), against
 // the scalar watertight test of each triangle: the lane of least t (the first of equal
 // ones; with any_hit the first hit), and the same distance and barycentrics bit for bit, for
 // closest and any hits, with and without culling, on blocks full of near ties and exact ties
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <random>
 
-#include "cl/shapes.h"
+#include "cl/geometry/shapes.h"
 
 namespace rt {
 namespace {
@@ -34,7 +34,7 @@ ScalarResult ScalarLoop(const TriangleRay& tr, const float3 (&v)[RT_BVH_WIDTH][3
   return r;
 }
 
-// A block as src/triangle_blocks.cpp lays it out: lanes past `count` all zero.
+// A block as src/bvh/triangle_blocks.cpp lays it out: lanes past `count` all zero.
 TriangleBlock MakeBlock(const float3 (&v)[RT_BVH_WIDTH][3], int count) {
   float soa[9][RT_BVH_WIDTH] = {};
   for (int lane = 0; lane < count; ++lane)

@@ -22,8 +22,8 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 # Headers that define storage (buffer layouts) or precision-neutral helpers: left as is.
 STORAGE = {
-    "cl/compat.h", "cl/data_arrays.h", "cl/features.h", "cl/film_types.h",
-    "cl/scene_types.h", "cl/simd.h", "cl/texture/texture_types.h", "cl/util/real.h",
+    "cl/compat.h", "cl/data_arrays.h", "cl/features.h", "cl/film/film_types.h",
+    "cl/scene_types.h", "cl/bvh/simd.h", "cl/texture/texture_types.h", "cl/util/real.h",
     "cl/util/hash.h", "cl/util/transcendental.h",
 }
 RULES = [

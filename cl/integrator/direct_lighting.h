@@ -3,10 +3,10 @@
 #ifndef RT_INTEGRATOR_DIRECT_LIGHTING_H
 #define RT_INTEGRATOR_DIRECT_LIGHTING_H
 
-#include "../intersect.h"
+#include "../bvh/intersect.h"
 #include "../light/light.h"
 #include "../material/material.h"
-#include "../surface.h"
+#include "../geometry/surface.h"
 
 // 1 when nothing lies between origin and origin + segment (exclusive).
 RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, real3 origin, real3 segment, real time,

@@ -5,12 +5,12 @@
 #ifndef RT_INTEGRATOR_H
 #define RT_INTEGRATOR_H
 
-#include "../camera.h"
-#include "../film_types.h"
-#include "../intersect.h"
+#include "../camera/camera.h"
+#include "../film/film_types.h"
+#include "../bvh/intersect.h"
 #include "../light/emission.h"
 #include "../material/material.h"
-#include "../surface.h"
+#include "../geometry/surface.h"
 #include "direct_lighting.h"
 #include "escaped.h"
 #include "path.h"

@@ -26,11 +26,11 @@
 #ifndef RT_INTEGRATOR_PATH_H
 #define RT_INTEGRATOR_PATH_H
 
-#include "../camera.h"
-#include "../intersect.h"
+#include "../camera/camera.h"
+#include "../bvh/intersect.h"
 #include "../light/emission.h"
 #include "../material/material.h"
-#include "../surface.h"
+#include "../geometry/surface.h"
 #include "direct_lighting.h"
 #include "escaped.h"
 #include "primary_info.h"

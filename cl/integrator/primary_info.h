@@ -4,8 +4,8 @@
 #ifndef RT_INTEGRATOR_PRIMARY_INFO_H
 #define RT_INTEGRATOR_PRIMARY_INFO_H
 
-#include "../film_types.h"
-#include "../ray.h"
+#include "../film/film_types.h"
+#include "../geometry/ray.h"
 
 // `info` is null for the samples after a pixel's first, whose facts nobody reads.
 RT_DEVICE void RecordPrimaryHit(RT_PRIVATE PrimaryInfo* info, Hit hit, real3 normal) {

@@ -5,7 +5,7 @@
 #define RT_INTEGRATOR_RAY_TREE_H
 
 #include "../features.h"
-#include "../ray.h"
+#include "../geometry/ray.h"
 #include "../scene_types.h"
 #include "../util/hash.h"
 

@@ -6,7 +6,7 @@
 #define RT_LIGHT_EMISSION_H
 
 #include "../features.h"
-#include "../surface.h"
+#include "../geometry/surface.h"
 #include "mesh_light.h"
 #include "sphere_light.h"
 

@@ -5,7 +5,7 @@
 // specification's estimate L^ = 2 pi L(d) when p is its uniform hemisphere density.
 //
 // The map's texels are sd->env_texels (row-major, top row first). Importance sampling
-// reads two cumulative distributions the host builds (src/flat_environment.cpp) from
+// reads two cumulative distributions the host builds (src/prepare/flat_environment.cpp) from
 // f(x, y) = luminance(texel) * (solid angle per unit map area at the texel's centre): the
 // marginal over rows, H + 1 values in sd->env_marginal_cdf, and for each row the
 // conditional over its columns, W + 1 values per row in sd->env_conditional_cdf.

@@ -5,7 +5,7 @@
 #define RT_LIGHT_H
 
 #include "../features.h"
-#include "../sampler.h"
+#include "../sampling/sampler.h"
 #include "area.h"
 #include "directional.h"
 #include "environment.h"

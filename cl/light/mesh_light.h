@@ -8,8 +8,8 @@
 #ifndef RT_LIGHT_MESH_LIGHT_H
 #define RT_LIGHT_MESH_LIGHT_H
 
-#include "../ray.h"
-#include "../transform.h"
+#include "../geometry/ray.h"
+#include "../geometry/transform.h"
 #include "light_sample.h"
 
 // The triangle whose cumulative-area interval holds *u, which is rescaled to [0, 1)

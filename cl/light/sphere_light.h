@@ -11,8 +11,8 @@
 #ifndef RT_LIGHT_SPHERE_LIGHT_H
 #define RT_LIGHT_SPHERE_LIGHT_H
 
-#include "../ray.h"
-#include "../transform.h"
+#include "../geometry/ray.h"
+#include "../geometry/transform.h"
 #include "../util/math.h"
 #include "light_sample.h"
 

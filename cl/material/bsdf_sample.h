@@ -4,11 +4,11 @@
 #ifndef RT_MATERIAL_BSDF_SAMPLE_H
 #define RT_MATERIAL_BSDF_SAMPLE_H
 
-#include "../sampler.h"
-#include "../surface.h"
+#include "../sampling/sampler.h"
+#include "../geometry/surface.h"
 #include "brdf.h"
 
-// Random dimensions a path vertex draws, offsets from its key (cl/sampler.h). Lights use
+// Random dimensions a path vertex draws, offsets from its key (cl/sampling/sampler.h). Lights use
 // 0x1000 + i, glossy perturbation 0x2000 and the dielectric's Fresnel choice 4 (as in the
 // ray tree, so the same materials draw the same numbers in both integrators).
 #define RT_DIM_BSDF_DIRECTION 0x3000u

@@ -4,7 +4,7 @@
 #define RT_MATERIAL_CONDUCTOR_H
 
 #include "../integrator/ray_tree.h"
-#include "../surface.h"
+#include "../geometry/surface.h"
 #include "fresnel.h"
 #include "mirror.h"
 

@@ -4,7 +4,7 @@
 #define RT_MATERIAL_DIELECTRIC_H
 
 #include "../integrator/ray_tree.h"
-#include "../surface.h"
+#include "../geometry/surface.h"
 #include "bsdf_sample.h"
 #include "fresnel.h"
 #include "glossy.h"

@@ -4,7 +4,7 @@
 #define RT_MATERIAL_GLOSSY_H
 
 #include "../features.h"
-#include "../sampler.h"
+#include "../sampling/sampler.h"
 #include "../scene_types.h"
 
 RT_DEVICE real3 PerturbDirection(real3 r, real roughness, real2 xi) {

@@ -3,7 +3,7 @@
 #define RT_MATERIAL_MIRROR_H
 
 #include "../integrator/ray_tree.h"
-#include "../surface.h"
+#include "../geometry/surface.h"
 #include "bsdf_sample.h"
 #include "glossy.h"
 

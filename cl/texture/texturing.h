@@ -4,7 +4,7 @@
 #ifndef RT_TEXTURING_H
 #define RT_TEXTURING_H
 
-#include "../surface.h"
+#include "../geometry/surface.h"
 #include "checkerboard.h"
 #include "image_texture.h"
 #include "perlin.h"

@@ -1,12 +1,12 @@
 // The wide BVH's node test in the computation's precision (cl/util/real.h). Nodes store
-// their boxes as float lanes (cl/simd.h); the test widens them to `LaneReal`, so in double
+// their boxes as float lanes (cl/bvh/simd.h); the test widens them to `LaneReal`, so in double
 // the slabs are met by the unrounded double ray and the box test stays as conservative as
 // the float test is in float (a rounded copy of the ray could miss a box that the double
 // triangle test then finds a hit in).
 #ifndef RT_UTIL_LANES_H
 #define RT_UTIL_LANES_H
 
-#include "../simd.h"
+#include "../bvh/simd.h"
 #include "real.h"
 
 #ifndef RT_REAL_DOUBLE

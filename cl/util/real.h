@@ -1,7 +1,7 @@
 // The scalar type of the computation, `real`, and its vectors `real2`, `real3`: float by
 // default, double when the program is built with RT_REAL_DOUBLE (`--precision double`).
 // Only computation is written over `real`; the scene's arrays and the per-pixel outputs
-// keep their float layouts (cl/scene_types.h, cl/film_types.h), so memory, uploads and the
+// keep their float layouts (cl/scene_types.h, cl/film/film_types.h), so memory, uploads and the
 // layout check do not depend on the precision. A value read from an array enters the
 // computation through ToReal3 and a result leaves it through ToFloat3; both are the
 // identity in float, and in double they round to nearest on both devices.

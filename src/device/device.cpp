@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "device/cl/cl_device.h"
-#include "device/cpu_device.h"
+#include "device/cpu/cpu_device.h"
 
 namespace rt {
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "cl/film_types.h"
-#include "flat_scene.h"
+#include "cl/film/film_types.h"
+#include "prepare/flat_scene.h"
 
 namespace rt {
 

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "render_job.h"
+#include "app/render_job.h"
 
 namespace rt {
 namespace {

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "app/cli.h"
 #include "distributed/job_plan.h"
-#include "progress.h"
-#include "render.h"
+#include "app/progress.h"
+#include "integrator/render.h"
 
 namespace rt {
 

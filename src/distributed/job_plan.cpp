@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render_job.h"
+#include "app/render_job.h"
 
 namespace rt {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
-#include "scene.h"
+#include "app/cli.h"
+#include "scene/scene.h"
 
 namespace rt {
 

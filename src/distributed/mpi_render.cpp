@@ -15,7 +15,7 @@
 #include "distributed/coordinator.h"
 #include "distributed/mpi_link.h"
 #include "distributed/tile_worker.h"
-#include "render_job.h"
+#include "app/render_job.h"
 #include "util/parallel_for.h"
 
 namespace rt {

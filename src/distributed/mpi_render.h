@@ -12,7 +12,7 @@
 // This code is compiled only when CMake finds MPI.
 #pragma once
 
-#include "cli.h"
+#include "app/cli.h"
 
 namespace rt {
 

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "app/cli.h"
 #include "device/device.h"
 #include "distributed/job_plan.h"
-#include "flat_scene.h"
-#include "render_job.h"
+#include "prepare/flat_scene.h"
+#include "app/render_job.h"
 
 namespace rt {
 

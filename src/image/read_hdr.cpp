@@ -14,7 +14,7 @@
 #include <iterator>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {

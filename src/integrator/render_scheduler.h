@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "device/device.h"
-#include "progress.h"
-#include "render.h"
+#include "app/progress.h"
+#include "integrator/render.h"
 
 namespace rt {
 

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "render.h"
+#include "integrator/render.h"
 
 namespace rt {
 

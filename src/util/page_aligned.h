@@ -1,6 +1,6 @@
 // Vectors whose storage starts on a page boundary. The scene's arrays live in them so an
 // OpenCL device on the host's CPU can render straight from them (CL_MEM_USE_HOST_PTR,
-// src/cl_scene_buffers.cpp): a runtime uses a host pointer as the buffer only when it is
+// src/device/cl/cl_scene_buffers.cpp): a runtime uses a host pointer as the buffer only when it is
 // aligned as the device asks (CL_DEVICE_MEM_BASE_ADDR_ALIGN; PoCL: 128 bytes), and a page
 // is a multiple of what any device asks; otherwise it keeps a second copy of the scene.
 #pragma once

@@ -1,5 +1,5 @@
 // binaryFile on VertexData, TexCoordData and Faces (hw6/sponza.xml; layout in
-// src/loader/binary_data.h): small files written here give the geometry, texture
+// src/scene/loader/binary_data.h): small files written here give the geometry, texture
 // coordinates and image of the inline text they encode, and bad files one clear line.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "loader/render_both.h"
 #include "support/loader_fixture.h"
 

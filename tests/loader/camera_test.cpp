@@ -1,12 +1,12 @@
-// Cameras in the loader (src/loader/cameras.cpp): required elements, degenerate gaze and up
+// Cameras in the loader (src/scene/loader/cameras.cpp): required elements, degenerate gaze and up
 // vectors, lookAt cameras, resolution, near plane and sample counts.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "errors.h"
-#include "scene.h"
+#include "util/errors.h"
+#include "scene/scene.h"
 #include "support/loader_fixture.h"
 
 namespace rt {

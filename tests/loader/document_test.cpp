@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "errors.h"
-#include "scene.h"
+#include "util/errors.h"
+#include "scene/scene.h"
 #include "support/loader_fixture.h"
 
 namespace rt {

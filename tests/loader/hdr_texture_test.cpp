@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "io/image_output.h"
 #include "loader/render_both.h"
 #include "support/loader_fixture.h"

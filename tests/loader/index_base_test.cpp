@@ -3,7 +3,7 @@
 // the file's own base.
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "loader/render_both.h"
 #include "support/loader_fixture.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "loader/render_both.h"
 #include "support/loader_fixture.h"
 

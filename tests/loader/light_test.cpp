@@ -1,11 +1,11 @@
-// Lights in the loader (src/loader/lights.cpp): area lights given by a normal and a size or
+// Lights in the loader (src/scene/loader/lights.cpp): area lights given by a normal and a size or
 // by edge vectors, and negative light values.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "errors.h"
-#include "scene.h"
+#include "util/errors.h"
+#include "scene/scene.h"
 #include "support/loader_fixture.h"
 
 namespace rt {

@@ -1,11 +1,11 @@
-// Materials in the loader (src/loader/materials.cpp): references to materials, ids with
+// Materials in the loader (src/scene/loader/materials.cpp): references to materials, ids with
 // white space, and the older dialect of the material elements.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "errors.h"
-#include "scene.h"
+#include "util/errors.h"
+#include "scene/scene.h"
 #include "support/loader_fixture.h"
 
 namespace rt {

@@ -1,11 +1,11 @@
-// Objects in the loader (src/loader/objects.cpp): vertex and face indices, spheres, mesh
+// Objects in the loader (src/scene/loader/objects.cpp): vertex and face indices, spheres, mesh
 // instances, PLY files referenced by a mesh, degenerate triangles and motion blur.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "errors.h"
-#include "scene.h"
+#include "util/errors.h"
+#include "scene/scene.h"
 #include "support/loader_fixture.h"
 
 namespace rt {

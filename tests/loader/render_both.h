@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "flat_scene.h"
-#include "scene.h"
+#include "prepare/flat_scene.h"
+#include "scene/scene.h"
 #include "support/device_harness.h"
 
 namespace rt::test {

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "device/cpu_device.h"
+#include "device/cpu/cpu_device.h"
 
 namespace rt::test {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "cl/bvh.h"
-#include "cl/surface.h"
-#include "flat_scene.h"
-#include "mat4.h"
+#include "cl/bvh/bvh.h"
+#include "cl/geometry/surface.h"
+#include "prepare/flat_scene.h"
+#include "util/mat4.h"
 
 namespace rt::test {
 

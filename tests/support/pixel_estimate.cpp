@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "cl/material/brdf.h"
-#include "render.h"
+#include "integrator/render.h"
 #include "support/device_harness.h"
 
 namespace rt::test {

@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "flat_scene.h"
-#include "scene.h"
+#include "prepare/flat_scene.h"
+#include "scene/scene.h"
 
 namespace rt::test {
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <random>
 
-#include "errors.h"
+#include "util/errors.h"
 
 namespace rt::test {
 

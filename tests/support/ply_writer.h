@@ -13,7 +13,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "ply.h"
+#include "scene/ply.h"
 
 namespace rt::test {
 

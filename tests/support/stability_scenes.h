@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "flat_scene.h"
-#include "mat4.h"
-#include "scene.h"
+#include "prepare/flat_scene.h"
+#include "util/mat4.h"
+#include "scene/scene.h"
 
 namespace stab {
 

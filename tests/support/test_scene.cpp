@@ -5,8 +5,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "errors.h"
-#include "scene.h"
+#include "util/errors.h"
+#include "scene/scene.h"
 
 namespace rt::test {
 

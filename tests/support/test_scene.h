@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace rt::test {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cl/features.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace rtconvert {
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace rtconvert {
 

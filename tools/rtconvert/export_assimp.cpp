@@ -11,7 +11,7 @@
 #include <map>
 
 #include "convert.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 #include "gltf_export.h"
 
 namespace rtconvert {

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "convert.h"
-#include "flat_scene.h"
+#include "prepare/flat_scene.h"
 
 namespace rtconvert {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "convert.h"
-#include "errors.h"
+#include "util/errors.h"
 #include "util/args.h"
 
 namespace {

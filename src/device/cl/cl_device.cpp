@@ -4,9 +4,9 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "bvh_lanes.h"
+#include "bvh/bvh_lanes.h"
 #include "cl/features.h"
-#include "cl_scene_buffers.h"
+#include "device/cl/cl_scene_buffers.h"
 #include "device/cl/cl_platform.h"
 #include "device/cl/cl_program.h"
 

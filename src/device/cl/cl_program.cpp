@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cl_scene_buffers.h"
+#include "device/cl/cl_scene_buffers.h"
 #include "io/file_util.h"
 
 namespace rt {
@@ -71,10 +71,10 @@ std::string ClProgramCache::options_for(int features, bool fast_math, bool doubl
                                         int bvh_width) const {
   check_precision_support(name_, fp64_, double_precision);
   std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
-  // The width of the nodes and triangle blocks the host built (cl/simd.h, src/bvh_lanes.h).
+  // The width of the nodes and triangle blocks the host built (cl/bvh/simd.h, src/bvh/bvh_lanes.h).
   o += " -DRT_BVH_WIDTH=" + std::to_string(bvh_width);
   if (double_precision) o += " -DRT_REAL_DOUBLE=1";
-  // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/film.h).
+  // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/film/film.h).
   if (cpu_) o += " -DRT_CL_CPU_DEVICE=1";
   if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
   // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).

@@ -1,0 +1,173 @@
+// Reads the METU CENG795 scene format (assignments 1-6 and the older dialects seen in
+// the course's files) with tinyxml2: the document, the scene-wide values and the helpers
+// every element family uses. The families live beside this file.
+#include <tinyxml2.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "cl/material/brdf.h"
+#include "util/errors.h"
+#include "image/read_ldr.h"
+#include "scene/loader/loader.h"
+#include "scene/ply.h"
+#include "scene/scene.h"
+#include "scene/scene_schema.h"
+#include "scene/xml_text.h"
+
+namespace rt {
+namespace loader {
+
+// A number as the file would write it: 3, -1.5, 1e+30.
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count, size_t max_count) const {
+  const std::string text = text_of(e);
+  std::vector<double> out;
+  const char* p = text.c_str();
+  for (;;) {
+    while (*p && std::isspace(static_cast<unsigned char>(*p))) ++p;
+    if (!*p) break;
+    const char* start = p;
+    while (*p && !std::isspace(static_cast<unsigned char>(*p))) ++p;
+    std::string token(start, p);
+    char* end = nullptr;
+    errno = 0;
+    double v = std::strtod(token.c_str(), &end);
+    if (end != token.c_str() + token.size() || token.empty())
+      fail(e, "not a number: '" + shorten(token) + "'");
+    // Overflow gives inf; underflow (1e-400) is a representable tiny value, not an error.
+    if (!std::isfinite(v)) fail(e, "not a finite number: '" + shorten(token) + "'");
+    // The devices work in float. Positions reach them relative to the camera (src/
+    // world_frame.h), so a position beyond float range could in principle be rendered, but
+    // there even double resolves only 1e22 units (2^-52 of the value): no detail the file
+    // could mean survives the parse. Every other number (radii, scales, colours) goes to
+    // float as it is. So one limit for all: the float range.
+    if (std::fabs(v) > FLT_MAX)
+      fail(e, "'" + shorten(token) + "' is too large (beyond float range)");
+    out.push_back(v);
+  }
+  if (out.size() < min_count || out.size() > max_count) {
+    std::ostringstream s;
+    s << "expected " << min_count;
+    if (max_count != min_count)
+      s << (max_count == SIZE_MAX ? " or more" : " to " + std::to_string(max_count));
+    s << (max_count == 1 ? " number" : " numbers") << ", got " << out.size() << " ('"
+      << shorten(text) << "')";
+    fail(e, s.str());
+  }
+  return out;
+}
+
+const XMLElement* Loader::child(const XMLElement* e, const char* name, bool required) const {
+  const XMLElement* c = e->FirstChildElement(name);
+  if (!c && required) fail(e, std::string("missing <") + name + ">");
+  return c;
+}
+
+double Loader::child_number(const XMLElement* e, const char* name, double fallback) const {
+  const XMLElement* c = child(e, name, false);
+  return c ? number(c) : fallback;
+}
+
+Vec3d Loader::child_vec3(const XMLElement* e, const char* name, Vec3d fallback) const {
+  const XMLElement* c = child(e, name, false);
+  return c ? vec3(c) : fallback;
+}
+
+SceneDesc Loader::load() {
+  tinyxml2::XMLDocument doc;
+  errno = 0;
+  tinyxml2::XMLError err = doc.LoadFile(file_.c_str());
+  const int open_errno = errno;
+  if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND ||
+      err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
+    throw input_error(file_, "file",
+                      std::string("cannot open") +
+                          (open_errno ? std::string(": ") + std::strerror(open_errno) : ""));
+  // A directory opens but cannot be read; tinyxml2 would call either "malformed at line 0".
+  std::error_code ec;
+  if (err == tinyxml2::XML_ERROR_FILE_READ_ERROR || std::filesystem::is_directory(file_, ec))
+    throw input_error(file_, "file",
+                      std::filesystem::is_directory(file_, ec) ? "is a directory, not a scene file"
+                                                               : "cannot read");
+  scene_.inputs.push_back(file_);
+  return read_document(doc, err);
+}
+
+SceneDesc Loader::load_text(const std::string& xml) {
+  tinyxml2::XMLDocument doc;
+  return read_document(doc, doc.Parse(xml.data(), xml.size()));
+}
+
+SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError err) {
+  if (err == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)
+    throw input_error(file_, "XML", "empty document: no <Scene> element");
+  if (err != tinyxml2::XML_SUCCESS) {
+    // ErrorStr() ends in ": XMLElement name=ImageName" when it knows the element.
+    std::string detail = doc.ErrorStr() ? doc.ErrorStr() : "", where;
+    size_t at = detail.find("XMLElement name=");
+    if (at != std::string::npos) where = " in <" + shorten(detail.substr(at + 16)) + ">";
+    throw input_error(file_, "XML",
+                      std::string("malformed at line ") + std::to_string(doc.ErrorLineNum()) +
+                          where + ": " + doc.ErrorName());
+  }
+  const XMLElement* scene = doc.FirstChildElement("Scene");
+  if (!scene) throw input_error(file_, "XML", "no <Scene> root element");
+  scene_.file = file_;
+  // Structure first (unsupported features, repeats, unknown elements), then the values.
+  for (const std::string& w : check_scene_structure(doc, file_)) warn(w);
+  scene_.background = child_vec3(scene, "BackgroundColor", {});
+  scene_.shadow_epsilon = child_number(scene, "ShadowRayEpsilon", 1e-3);
+  if (scene_.shadow_epsilon < 0)
+    fail_value(child(scene, "ShadowRayEpsilon", true), "must not be negative");
+  scene_.intersection_epsilon = child_number(scene, "IntersectionTestEpsilon", 1e-6);
+  if (scene_.intersection_epsilon < 0)
+    fail_value(child(scene, "IntersectionTestEpsilon", true), "must not be negative");
+  if (const XMLElement* d = child(scene, "MaxRecursionDepth", false)) {
+    double v = number(d);
+    if (v < 0 || v != std::floor(v) || v > RT_MAX_DEPTH)
+      fail_value(d, "is not a whole number in [0, " + std::to_string(RT_MAX_DEPTH) + "]");
+    scene_.max_depth = static_cast<int>(v);
+  }
+  read_cameras(scene);
+  read_lights(scene);
+  read_brdfs(scene);
+  read_materials(scene);
+  read_transformations(scene);
+  read_index_base(scene);
+  read_vertices(scene);
+  read_textures(scene);
+  read_texcoords(scene);
+  read_objects(scene);
+  check_texture_coordinates();
+  if (scene_.degenerate_triangles > 0)
+    warn(file_ + ": Objects: skipped " + std::to_string(scene_.degenerate_triangles) +
+         " degenerate triangles");
+  return std::move(scene_);
+}
+
+}  // namespace loader
+
+SceneDesc load_scene(const std::string& path, const LoadOptions& options) {
+  return loader::Loader(path, options).load();
+}
+
+SceneDesc load_scene_text(const std::string& xml, const std::string& name,
+                          const LoadOptions& options) {
+  return loader::Loader(name, options).load_text(xml);
+}
+
+}  // namespace rt
