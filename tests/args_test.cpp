@@ -1,4 +1,4 @@
-// The option tables (src/util/args.h, src/cli.cpp): parsing, the one-line usage errors,
+// The option tables (src/util/args.h, src/app/cli.cpp): parsing, the one-line usage errors,
 // the defaults shown, mounted tables, and the README's option table kept in step.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "app/cli.h"
 #include "util/args.h"
 
 namespace rt {
