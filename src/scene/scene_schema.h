@@ -22,4 +22,9 @@ namespace rt {
 std::vector<std::string> check_scene_structure(const tinyxml2::XMLDocument& doc,
                                                const std::string& file);
 
+// For "missing <Radius>": "; <Radious> at line 5 is not a known element: did you mean
+// <Radius>?" when a child of `parent` that no rule knows is a likely misspelling of
+// `missing`; "" otherwise.
+std::string misspelling_hint(const tinyxml2::XMLElement* parent, const char* missing);
+
 }  // namespace rt
