@@ -32,14 +32,19 @@ void on_jpeg_error(j_common_ptr cinfo) {
   std::longjmp(err->jump, 1);
 }
 
-void on_jpeg_warning(j_common_ptr, int) {}  // Recoverable damage decodes as it can.
+// Level -1 is a warning: damaged data (a truncated file, a corrupt segment) that libjpeg
+// would decode with the missing part grey. A texture so damaged gives a silently wrong
+// image, so the warning is an error too. Levels 0 and up are trace messages.
+void on_jpeg_message(j_common_ptr cinfo, int level) {
+  if (level < 0) on_jpeg_error(cinfo);
+}
 
 ImageF read_jpeg(const std::string& path, std::FILE* file) {
   jpeg_decompress_struct cinfo;
   JpegError err;
   cinfo.err = jpeg_std_error(&err.mgr);
   err.mgr.error_exit = on_jpeg_error;
-  err.mgr.emit_message = on_jpeg_warning;
+  err.mgr.emit_message = on_jpeg_message;
   // Declared before setjmp so a longjmp leaves it in a defined state.
   ImageF* volatile out = new ImageF;
   std::unique_ptr<ImageF> guard(out);

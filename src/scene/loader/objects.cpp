@@ -13,12 +13,12 @@
 #include <sstream>
 
 #include "cl/material/brdf.h"
-#include "util/errors.h"
 #include "image/read_ldr.h"
 #include "scene/loader/loader.h"
 #include "scene/ply.h"
 #include "scene/scene.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
@@ -125,8 +125,7 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
       scene_.inputs.push_back(p.string());
       pm = read_ply(p.string());
     } catch (const InputError& err) {
-      // The PLY reader names the PLY file; add the scene file and the element.
-      fail(faces, "plyFile '" + shorten(ply) + "': " + err.what());
+      fail_file(faces, "plyFile", p.string(), err);
     }
     for (auto& v : pm.positions) mesh.positions.push_back({v[0], v[1], v[2]});
     mesh.triangles = pm.triangles;
