@@ -4,6 +4,7 @@
 #include <map>
 #include <utility>
 
+#include "scene/loader/shared_ids.h"
 #include "util/errors.h"
 #include "util/spelling.h"
 #include "xml_text.h"
@@ -229,40 +230,6 @@ std::string suggestion(const std::string& context, const std::string& name) {
   return attr ? "; did you mean " + near.substr(1) + "?" : "; did you mean <" + near + ">?";
 }
 
-// The id namespaces several element kinds share, because one reference may name any of
-// them: the one table of them. Every other kind has its own ids (a <Material>'s id never
-// clashes with a <Mesh>'s).
-struct SharedIds {
-  const char* context;
-  std::vector<const char*> kinds;
-  const char* reference;  // What refers to them, for the message.
-  bool refused;  // Two kinds with one id are an error; otherwise the first kind listed wins.
-};
-
-const std::vector<SharedIds>& shared_ids() {
-  static const std::vector<SharedIds> kShared = {
-      {"BRDFs",
-       {"OriginalBlinnPhong", "OriginalPhong", "ModifiedBlinnPhong", "ModifiedPhong",
-        "TorranceSparrow"},
-       "a Material's BRDF=\"id\"",
-       true},
-      // The course's veach_ajar and dragon_dynamic scenes reuse Mesh ids for MeshInstances
-      // (and its Cornell boxes a Mesh id for a LightMesh): a baseMeshId takes the kind
-      // listed first (src/scene/loader/objects.cpp looks them up in this order).
-      {"Objects", {"Mesh", "MeshInstance", "LightMesh"}, "a MeshInstance's baseMeshId", false},
-  };
-  return kShared;
-}
-
-// The namespace of `kind`'s ids inside `context`: the shared group, or the kind itself.
-const SharedIds* shared_group(const std::string& context, const char* kind) {
-  for (const SharedIds& g : shared_ids())
-    if (context == g.context)
-      for (const char* k : g.kinds)
-        if (std::strcmp(k, kind) == 0) return &g;
-  return nullptr;
-}
-
 bool is_blank(const char* s) {
   for (; s && *s; ++s)
     if (!std::strchr(" \t\r\n", *s)) return false;
@@ -371,7 +338,7 @@ class StructureCheck {
       }
       if (const char* id = c->Attribute("id")) {
         // Kinds whose shared ids are refused are one namespace; the others keep their own.
-        const SharedIds* group = shared_group(context, c->Name());
+        const SharedIds* group = shared_ids_of(context, c->Name());
         const bool shared = group && group->refused;
         const std::string space = shared ? std::string("#") + group->kinds[0] : c->Name();
         auto [it, first] = ids.emplace(std::make_pair(space, std::string(id)), c);
