@@ -1,13 +1,8 @@
 #include "io/jpeg_io.h"
 
-// jpeglib.h needs FILE and size_t declared before it.
-#include <jpeglib.h>
-#include <cstdio>
-#include <cstdlib>
-
-#include <csetjmp>
 #include <stdexcept>
 
+#include "image/jpeg_error.h"
 #include "io/file_util.h"
 
 namespace rt {
@@ -17,22 +12,12 @@ namespace {
   throw std::runtime_error(path + ": cannot write JPEG: " + why);
 }
 
-// libjpeg's fatal errors must not return: they jump back with the message kept.
-struct JpegWriteError {
-  jpeg_error_mgr mgr;
-  std::jmp_buf jump;
-  char message[JMSG_LENGTH_MAX];
-  // The encoded bytes, which libjpeg grows in place. Kept here (its address is libjpeg's)
-  // rather than in a local, so they are still known after a longjmp.
+// The encoded bytes, which libjpeg grows in place; beside the error state (whose address
+// is libjpeg's), rather than in locals, so they are still known after a longjmp.
+struct JpegWriteError : JpegError {
   unsigned char* out = nullptr;
   unsigned long size = 0;
 };
-
-void on_error(j_common_ptr cinfo) {
-  auto* err = reinterpret_cast<JpegWriteError*>(cinfo->err);
-  (*cinfo->err->format_message)(cinfo, err->message);
-  std::longjmp(err->jump, 1);
-}
 
 }  // namespace
 
@@ -43,8 +28,7 @@ void write_jpeg(const std::string& path, const Image8& image, int quality) {
          "invalid image size " + std::to_string(image.width) + "x" + std::to_string(image.height));
   jpeg_compress_struct cinfo;
   JpegWriteError err;
-  cinfo.err = jpeg_std_error(&err.mgr);
-  err.mgr.error_exit = on_error;
+  cinfo.err = jpeg_error_jump(&err);
   if (setjmp(err.jump)) {
     jpeg_destroy_compress(&cinfo);
     std::free(err.out);
