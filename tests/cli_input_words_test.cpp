@@ -113,8 +113,9 @@ TEST_F(CliInputWords, MisspeltOptionGetsDidYouMean) {
 }
 
 TEST_F(CliInputWords, MissingPlyFileNamedOnce) {
-  const std::string err = refused(tiny_scene_with_ply_mesh("missing_mesh.ply"),
-                                  {"plyFile 'missing_mesh.ply': cannot open"});
+  const std::string err =
+      refused(tiny_scene_with_ply_mesh("missing_mesh.ply"),
+              {"plyFile '" + (dir_ / "missing_mesh.ply").string() + "': cannot open"});
   size_t count = 0;
   for (size_t at = err.find("missing_mesh.ply"); at != std::string::npos;
        at = err.find("missing_mesh.ply", at + 1))

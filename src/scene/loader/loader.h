@@ -40,15 +40,15 @@ class Loader {
     fail(e, "'" + shorten(text_of(e)) + "' " + what);
   }
 
-  // A file the scene names (plyFile="m.ply") failed to read: its reader's message, which
-  // starts with the resolved path, follows the attribute as the scene gives it, so that the
-  // file is named once.
+  // A file the scene names (plyFile="m.ply") failed to read: the attribute with the path it
+  // resolved to (where the file was looked for), then the reader's message without the
+  // path it starts with, so that the file is named once.
   [[noreturn]] void fail_file(const XMLElement* e, const char* attribute, const std::string& path,
                               const InputError& err) const {
     std::string why = err.what();
     if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
     if (why.rfind("file: ", 0) == 0) why.erase(0, 6);
-    fail(e, std::string(attribute) + " '" + shorten(e->Attribute(attribute), 200) + "': " + why);
+    fail(e, std::string(attribute) + " '" + shorten(path, 200) + "': " + why);
   }
 
   std::vector<double> numbers(const XMLElement* e, size_t min_count, size_t max_count) const;
