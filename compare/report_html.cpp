@@ -24,9 +24,10 @@ body { font-family: sans-serif; margin: 1.5em; color: #222; }
 figure { margin: 0; } figcaption { font-size: 0.9em; margin-top: 0.3em; }
 img.view { width: 100%; image-rendering: pixelated; display: block; }
 .boxed { position: relative; }
-.box { position: absolute; border: 2px solid #ff2020; box-sizing: border-box; }
-.box span { position: absolute; top: -1.3em; left: 0; color: #ff2020; font-weight: bold;
-  font-size: 0.8em; background: rgba(255,255,255,0.7); padding: 0 2px; }
+.box { position: absolute; border: 2px solid #fff; outline: 1px solid #000;
+  box-sizing: border-box; }
+.box span { position: absolute; top: -1.3em; left: 0; color: #000; font-weight: bold;
+  font-size: 0.8em; background: rgba(255,255,255,0.8); padding: 0 2px; }
 img.bar { width: 200px; height: 12px; vertical-align: middle; image-rendering: pixelated; }
 table { border-collapse: collapse; } td, th { padding: 0.25em 0.6em; text-align: left;
   vertical-align: top; border-bottom: 1px solid #ddd; }
@@ -87,21 +88,24 @@ std::string describe(const char* label, const Side& s) {
 }
 
 // The tiles' smallest p through the colour map (1 at the rejection level), red where
-// rejected, grey where not tested: one pixel per tile, scaled up by the browser.
+// rejected, grey where not tested; at the image's size, so the boxes of the worst tiles
+// fall on it as on the difference map.
 rt::Image8 significance_map(const Analysis& r) {
   rt::Image8 m;
-  m.width = r.tiles_x;
-  m.height = r.tiles_y;
+  m.width = r.width;
+  m.height = r.height;
   m.rgb.assign(static_cast<size_t>(m.width) * m.height * 3, 96);
   double level = std::log10(std::clamp(r.verdict.sidak_level, 1e-300, 0.5));
-  for (size_t i = 0; i < r.tiles.size(); ++i) {
-    const TileFigures& t = r.tiles[i];
-    uint8_t* px = &m.rgb[i * 3];
+  for (const TileFigures& t : r.tiles) {
+    uint8_t px[3] = {96, 96, 96};
     if (t.rejected) {
       px[0] = 255, px[1] = px[2] = 0;
     } else if (t.tested) {
       viridis(t.p > 0 ? std::log10(t.p) / level : 1.0, px);
     }
+    for (int y = t.y; y < t.y + t.h; ++y)
+      for (int x = t.x; x < t.x + t.w; ++x)
+        std::copy(px, px + 3, &m.rgb[(static_cast<size_t>(y) * m.width + x) * 3]);
   }
   return m;
 }

@@ -16,3 +16,12 @@ add_test(NAME compare.report_browser
                  ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/report_browser)
 set_tests_properties(compare.report_cli compare.report_browser
                      PROPERTIES LABELS compare SKIP_RETURN_CODE 77)
+
+# `compare reference` on fresh renders of two cheap course scenes at the suite's settings:
+# they must pass, as ref.hw1.simple and ref.hw2.simple_transform do (skipped without the
+# scenes). tests/compare/report_reference_agree.sh takes any names of course_scenes.txt.
+add_test(NAME compare.reference_render
+         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/report_reference_agree.sh ${rt_report_exes}
+                 ${CMAKE_SOURCE_DIR} ${RT_SHARED_SCENES_DIR}
+                 ${CMAKE_CURRENT_BINARY_DIR}/reference_render hw1.simple hw2.simple_transform)
+set_tests_properties(compare.reference_render PROPERTIES LABELS compare SKIP_RETURN_CODE 77)
