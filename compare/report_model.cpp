@@ -119,8 +119,10 @@ std::vector<size_t> worst_tiles(const std::vector<TileFigures>& tiles, size_t n)
     if (tiles[i].rejected || tiles[i].max_abs > 0) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) {
     const TileFigures &a = tiles[i], &b = tiles[j];
+    // One key, so the order is strict and weak: rejected, then tested by p, then the rest.
     if (a.rejected != b.rejected) return a.rejected;
-    if (a.tested && b.tested && a.p != b.p) return a.p < b.p;
+    if (a.tested != b.tested) return a.tested;
+    if (a.tested && a.p != b.p) return a.p < b.p;
     if (a.mean_abs != b.mean_abs) return a.mean_abs > b.mean_abs;
     return a.max_abs > b.max_abs;
   });

@@ -55,7 +55,7 @@ struct Analysis {
   std::string words;  // The verdict in words.
 };
 
-// Ranks the tiles: rejected ones first, then by smallest p (when tested), then by mean and
+// Ranks the tiles: rejected ones first, then the tested by smallest p, then by mean and
 // largest difference; tiles without any difference are left out. At most `n`.
 std::vector<size_t> worst_tiles(const std::vector<TileFigures>& tiles, size_t n);
 

@@ -64,6 +64,9 @@ for cmd in "welch $a $c" "paired $a $c" "exact $a $c" "diff $a $c" "report $a $c
   [[ $err == *diff_images* || $err == *check_same_size* ]] && fail "$cmd: internal name: $err"
 done
 [ -e x.html ] && fail "report of mismatched sizes left x.html"
+err=$("$compare" diff $a $a --moments small/example.moments.exr 2>&1 >/dev/null)
+[ $? -eq 2 ] || fail "diff --moments of another size: not exit 2"
+expect_in "$err" "$a is 48x36" "small/example.moments.exr is 24x18"
 
 # Bad input to report: an unwritable page, a missing file.
 err=$("$compare" report $a $b --out /nonexistent/dir/r.html 2>&1)

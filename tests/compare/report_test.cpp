@@ -116,10 +116,12 @@ TEST(WorstTiles, RanksByDifferenceAndLeavesEqualTilesOut) {
 }
 
 TEST(WorstTiles, RejectedFirstThenSmallestP) {
-  // A rejected tile outranks a larger but insignificant difference; then p decides.
+  // A rejected tile outranks a larger but insignificant difference; then p decides, and
+  // a tile the test did not look at (equal means, different 8-bit pixels) comes last.
   std::vector<cmp::TileFigures> tiles = {Tile(5, 20, true, 0.3), Tile(0.1, 1, true, 1e-9, true),
-                                         Tile(1, 4, true, 0.01), Tile(0.2, 1, true, 1e-12, true)};
-  EXPECT_EQ(cmp::worst_tiles(tiles, 10), (std::vector<size_t>{3, 1, 2, 0}));
+                                         Tile(1, 4, true, 0.01), Tile(0.2, 1, true, 1e-12, true),
+                                         Tile(9, 30)};
+  EXPECT_EQ(cmp::worst_tiles(tiles, 10), (std::vector<size_t>{3, 1, 2, 0, 4}));
 }
 
 // A render of a w x h image whose every pixel has expected radiance `level` (plus `bias`
