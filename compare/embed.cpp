@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -77,25 +78,10 @@ rt::Image8 enlarge(const rt::Image8& image, int zoom) {
 }
 
 std::string html_escape(const std::string& text) {
+  // Numeric references serve text and attribute values alike; bytes of UTF-8 pass as they are.
   std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
+  for (char c : text)
+    out += c && std::strchr("&<>\"'", c) ? "&#" + std::to_string(c) + ";" : std::string(1, c);
   return out;
 }
 

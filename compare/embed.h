@@ -21,7 +21,7 @@ rt::Image8 crop(const rt::Image8& image, int x, int y, int w, int h);
 // Every pixel repeated `zoom` x `zoom` times (zoom >= 1).
 rt::Image8 enlarge(const rt::Image8& image, int zoom);
 
-// `text` with &, <, >, " escaped for HTML text and attribute values.
+// `text` with &, <, >, " and ' escaped for HTML text and attribute values.
 std::string html_escape(const std::string& text);
 
 }  // namespace cmp

@@ -76,7 +76,8 @@ TEST(Embed, Base64AndPngDataUri) {
   img.rgb.assign(12, 200);
   // The PNG signature 89 50 4E 47 0D 0A 1A 0A in base64.
   EXPECT_EQ(cmp::png_data_uri(img).rfind("data:image/png;base64,iVBORw0KGgo", 0), 0u);
-  EXPECT_EQ(cmp::html_escape("<a href=\"x\">&</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&lt;/a&gt;");
+  EXPECT_EQ(cmp::html_escape("<a href=\"x\">&'</a> \xc3\xa9"),
+            "&#60;a href=&#34;x&#34;&#62;&#38;&#39;&#60;/a&#62; \xc3\xa9");
 }
 
 TEST(Embed, CropAndNearestNeighbourEnlargement) {
