@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "convert.h"
 #include "scene/scene.h"
 
 namespace rtconvert {
@@ -36,7 +38,20 @@ void settings_from_json(const json& j, rt::SceneDesc& s);
 
 // The JSON of a .glb or .gltf file; a null value when the file is neither.
 json read_gltf_json(const std::string& path);
-// Replaces the JSON chunk of a .glb file, keeping its binary chunk.
-void rewrite_glb_json(const std::string& path, const json& gltf);
+// Replaces the JSON chunk of a .glb file, keeping its binary chunk; each of `images` (the
+// bytes of a PNG or JPEG file) is appended to the binary chunk as a bufferView and
+// becomes glTF image gltf["images"].size() + k.
+void rewrite_glb_json(const std::string& path, json gltf,
+                      const std::vector<std::string>& images = {});
+// The bytes of bufferView `view` of a .glb file's binary chunk.
+std::string read_glb_view(const std::string& path, const json& gltf, int view);
+
+// Texture maps (scene extras "textures", "backgroundTexture"); `gltf_image` is the glTF
+// image of an image texture, -1 for the procedural ones.
+json texture_to_json(const rt::TextureMapDesc& t, int gltf_image, bool degamma);
+// The course's texture maps of an rtconvert .glb, their images taken out of its binary
+// chunk (written beside the XML by write_course_xml).
+void textures_from_json(const json& scene_extras, const json& gltf, const std::string& file,
+                        ImportedScene& out);
 
 }  // namespace rtconvert

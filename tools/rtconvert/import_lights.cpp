@@ -201,7 +201,9 @@ void add_defaults(const std::string& file, int width, rt::SceneDesc& s, Report& 
     s.cameras.push_back(c);
     report.warn(file + ": no camera: a default one frames the scene (40 degrees vertical)");
   }
-  if (s.point_lights.empty() && s.area_lights.empty()) {
+  bool object_lights = false;
+  for (const auto& o : s.objects) object_lights = object_lights || o.emits;
+  if (s.point_lights.empty() && s.area_lights.empty() && s.lights.empty() && !object_lights) {
     const rt::CameraDesc& c = s.cameras[0];
     Vec3d p = c.position + Vec3d{0, 0.5 * b.diagonal(), 0};
     double d2 = dot(p - b.centre(), p - b.centre());
