@@ -76,8 +76,13 @@ std::string side_folder(const std::string& xml_path);
 // the decoded images only): read again from the <Textures> of `xml_path`.
 std::vector<ImageFile> course_image_files(const std::string& xml_path, const rt::SceneDesc& s);
 
-// Refuses (ConvertError) an output that is the input: the same file through another path,
-// a link or, on a file system that folds case, another letter case.
+// One warning per material library (mtllib) an OBJ file names that does not exist: Assimp
+// then gives every material its default grey without a word.
+void warn_missing_material_libraries(const std::string& obj, Report& report);
+
+// Refuses (ConvertError) an output in a folder that does not exist, and an output that is
+// the input: the same file through another path, a link or, on a file system that folds
+// case, another letter case.
 void check_not_input(const std::string& input, const std::string& output);
 
 // Warnings for what the target format cannot carry (format "glb", "obj", "pbrt", "xml"),

@@ -187,7 +187,7 @@ json read_gltf_json(const std::string& path) {
   return j;
 }
 
-void rewrite_glb_json(const std::string& path, json gltf, const std::vector<std::string>& images) {
+void rewrite_glb_json(const std::string& path, json gltf, const std::vector<GlbImage>& images) {
   std::string bytes = read_all(path);
   if (bytes.size() < 20 || u32(bytes, 0) != kGlbMagic || u32(bytes, 16) != kChunkJson)
     throw ConvertError(path + ": Assimp wrote no GLB JSON chunk");
@@ -197,14 +197,15 @@ void rewrite_glb_json(const std::string& path, json gltf, const std::vector<std:
     // The binary chunk is buffer 0; images go after its data, each 4-byte aligned.
     std::string data = rest.size() >= 8 ? rest.substr(8, u32(rest, 0)) : std::string();
     if (!gltf.contains("buffers") || gltf["buffers"].empty()) gltf["buffers"] = {json::object()};
-    for (const std::string& image : images) {
+    for (const GlbImage& image : images) {
       while (data.size() % 4) data += '\0';
-      const bool png = image.size() > 4 && image.compare(1, 3, "PNG") == 0;
-      gltf["images"].push_back({{"bufferView", gltf["bufferViews"].size()},
+      const bool png = image.bytes.size() > 4 && image.bytes.compare(1, 3, "PNG") == 0;
+      gltf["images"].push_back({{"name", image.name},
+                                {"bufferView", gltf["bufferViews"].size()},
                                 {"mimeType", png ? "image/png" : "image/jpeg"}});
       gltf["bufferViews"].push_back(
-          {{"buffer", 0}, {"byteOffset", data.size()}, {"byteLength", image.size()}});
-      data += image;
+          {{"buffer", 0}, {"byteOffset", data.size()}, {"byteLength", image.bytes.size()}});
+      data += image.bytes;
     }
     while (data.size() % 4) data += '\0';
     gltf["buffers"][0]["byteLength"] = data.size();

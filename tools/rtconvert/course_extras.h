@@ -38,11 +38,14 @@ void settings_from_json(const json& j, rt::SceneDesc& s);
 
 // The JSON of a .glb or .gltf file; a null value when the file is neither.
 json read_gltf_json(const std::string& path);
-// Replaces the JSON chunk of a .glb file, keeping its binary chunk; each of `images` (the
-// bytes of a PNG or JPEG file) is appended to the binary chunk as a bufferView and
-// becomes glTF image gltf["images"].size() + k.
-void rewrite_glb_json(const std::string& path, json gltf,
-                      const std::vector<std::string>& images = {});
+// A PNG or JPEG file to embed in a .glb: its name (without extension) and bytes.
+struct GlbImage {
+  std::string name, bytes;
+};
+// Replaces the JSON chunk of a .glb file, keeping its binary chunk; each of `images` is
+// appended to the binary chunk as a bufferView and becomes glTF image
+// gltf["images"].size() + k.
+void rewrite_glb_json(const std::string& path, json gltf, const std::vector<GlbImage>& images = {});
 // The bytes of bufferView `view` of a .glb file's binary chunk.
 std::string read_glb_view(const std::string& path, const json& gltf, int view);
 

@@ -150,8 +150,9 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
   }
   // A mesh used by several objects becomes one pbrt object per material it wears.
   std::map<std::pair<int, int>, int> users;
+  // Object lights are written one by one: pbrt's object instances cannot emit.
   for (const auto& obj : s.objects)
-    if (obj.kind == rt::ObjectDesc::kMesh) ++users[{obj.mesh, obj.material}];
+    if (obj.kind == rt::ObjectDesc::kMesh && !obj.emits) ++users[{obj.mesh, obj.material}];
   for (const auto& [key, count] : users) {
     if (count < 2) continue;
     o << "\nObjectBegin \"mesh" << key.first << "_material" << key.second << "\"\n  "
@@ -162,10 +163,13 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
   for (const auto& obj : s.objects) {
     o << "\nAttributeBegin\n";
     place(o, obj);
+    // LightMesh and LightSphere: a diffuse area light on the shape, emitting from the front
+    // faces as the course's (pbrt's default is one-sided, on the side of the normal).
+    if (obj.emits) o << "  AreaLightSource \"diffuse\" \"rgb L\" [ " << v(obj.radiance) << " ]\n";
     if (obj.kind == rt::ObjectDesc::kSphere) {
       o << "  " << material(s.materials[obj.material])
         << "\n  Shape \"sphere\" \"float radius\" 1\n";
-    } else if (users[{obj.mesh, obj.material}] > 1) {
+    } else if (!obj.emits && users[{obj.mesh, obj.material}] > 1) {
       o << "  ObjectInstance \"mesh" << obj.mesh << "_material" << obj.material << "\"\n";
     } else {
       o << "  " << material(s.materials[obj.material]) << "\n";

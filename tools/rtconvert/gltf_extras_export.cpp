@@ -3,6 +3,7 @@
 // volume), and under extras.ceng795 the course's exact values, which the importer prefers.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -82,16 +83,17 @@ void add_extension_used(json& g, const std::string& name) {
 }
 
 // The image files, embedded in the .glb (a .glb is one self-contained file).
-std::vector<std::string> image_bytes(const std::vector<ImageFile>& images) {
-  std::vector<std::string> out;
+std::vector<GlbImage> image_bytes(const std::vector<ImageFile>& images) {
+  std::vector<GlbImage> out;
   for (const ImageFile& f : images) {
+    const std::string name = std::filesystem::path(f.bytes.empty() ? f.path : f.name).stem();
     if (!f.bytes.empty()) {
-      out.push_back(f.bytes);
+      out.push_back({name, f.bytes});
       continue;
     }
     std::ifstream in(f.path, std::ios::binary);
     if (!in) throw ConvertError(f.path + ": cannot read the texture image");
-    out.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    out.push_back({name, std::string(std::istreambuf_iterator<char>(in), {})});
   }
   return out;
 }

@@ -307,6 +307,9 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
     report_.warn(file_ + ": " + std::to_string(ai_->mNumAnimations) +
                  " animations ignored (the scene is taken at rest)");
 
+  if (std::filesystem::path(file_).extension() == ".obj" ||
+      std::filesystem::path(file_).extension() == ".OBJ")
+    warn_missing_material_libraries(file_, report_);
   rt::SceneDesc& s = out_.scene;
   s.file = file_;
   // glTF's colour textures are sRGB by its specification; OBJ and FBX say nothing, and

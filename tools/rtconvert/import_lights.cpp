@@ -97,7 +97,9 @@ void import_cameras(const aiScene& ai, const std::string& file, bool gltf, int w
       throw ConvertError(where + "orthographic projection (the course's cameras are perspective)");
     Mat4 t = global_transform(ai, c.mName);
     rt::CameraDesc d;
-    d.position = t.point(v3(c.mPosition));
+    // A glTF camera sits at its node's origin; Assimp 5.2 also copies the node's
+    // translation into mPosition, which the node's transform would then apply twice.
+    d.position = t.point(gltf ? Vec3d{0, 0, 0} : v3(c.mPosition));
     d.gaze = t.vector(v3(c.mLookAt));
     d.up = t.vector(v3(c.mUp));
     if (length(cross(d.gaze, d.up)) == 0)

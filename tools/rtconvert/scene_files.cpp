@@ -3,6 +3,7 @@
 #include <tinyxml2.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -63,8 +64,31 @@ std::vector<ImageFile> course_image_files(const std::string& xml_path, const rt:
   return out;
 }
 
+void warn_missing_material_libraries(const std::string& obj, Report& report) {
+  std::ifstream in(obj);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string word;
+    if (!(words >> word) || word != "mtllib") continue;
+    // OBJ names the library relative to itself; a name may hold spaces.
+    std::string name;
+    std::getline(words >> std::ws, name);
+    while (!name.empty() && (name.back() == '\r' || name.back() == ' ')) name.pop_back();
+    fs::path p(name);
+    if (p.is_relative()) p = fs::path(obj).parent_path() / p;
+    std::error_code ec;
+    if (!fs::exists(p, ec))
+      report.warn(obj + ": material library '" + name +
+                  "' (mtllib) not found: " + "every material is a default grey");
+  }
+}
+
 void check_not_input(const std::string& input, const std::string& output) {
   std::error_code ec;
+  const fs::path folder = fs::path(output).parent_path();
+  if (!folder.empty() && !fs::is_directory(folder, ec))
+    throw ConvertError(output + ": the folder '" + folder.string() + "' does not exist");
   // equivalent() compares the files themselves (device and inode): other spellings of
   // the path, links and folded letter case all come to the same file.
   if (fs::exists(output, ec) && fs::equivalent(input, output, ec))

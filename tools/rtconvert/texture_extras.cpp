@@ -1,4 +1,5 @@
 // The course's texture maps in a glTF file's extras, their images in its binary chunk.
+#include <cctype>
 #include <map>
 
 #include "course_extras.h"
@@ -48,8 +49,13 @@ void textures_from_json(const json& scene_extras, const json& gltf, const std::s
         const json& image = gltf.at("images").at(gi);
         ImageFile f;
         f.bytes = read_glb_view(file, gltf, image.at("bufferView").get<int>());
-        f.name = "image" + std::to_string(gi) +
-                 (image.value("mimeType", "") == "image/jpeg" ? ".jpg" : ".png");
+        // The name becomes a file name: only letters, digits, '-' and '_' (no '..', no '/').
+        std::string name = image.value("name", "");
+        for (char& c : name)
+          if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+        if (name.empty()) name = "image" + std::to_string(gi);
+        f.name =
+            name.substr(0, 60) + (image.value("mimeType", "") == "image/jpeg" ? ".jpg" : ".png");
         f.degamma = degamma;
         out.images.push_back(f);
       }
