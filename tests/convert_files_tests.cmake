@@ -14,3 +14,7 @@ target_compile_definitions(
                               RT_SHARED_SCENES_DIR="${RT_SHARED_SCENES_DIR}")
 gtest_discover_tests(convert_files_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX convert.
                      PROPERTIES LABELS convert)
+add_executable(convert_wrap_tests convert_wrap_test.cpp)
+target_link_libraries(convert_wrap_tests PRIVATE rtconvert_lib GTest::gtest_main)
+gtest_discover_tests(convert_wrap_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX convert.
+                     PROPERTIES LABELS convert)

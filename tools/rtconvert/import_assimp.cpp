@@ -156,6 +156,11 @@ int Importer::course_mesh(unsigned ai_index, bool smooth, bool uvs) {
   if (it != mesh_of_ai_.end()) return it->second;
   const aiMesh& m = *ai_->mMeshes[ai_index];
   rt::MeshDesc d = mesh_of(m, uvs && m.HasTextureCoords(0), !course_ && !uvs);
+  if (!course_ && !d.uvs.empty())
+    if (int n = wrap_texture_coordinates(d))
+      report_.warn(file_ + ": " + d.element + ": " + std::to_string(n) +
+                   " triangles span more than one repeat of their texture; the course "
+                   "clamps to the edge texels there");
   for (const Vec3d& p : d.positions)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw ConvertError(file_ + ": " + d.element + ": a vertex position is not finite");

@@ -1,6 +1,7 @@
 #include "texture_import.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 
@@ -30,6 +31,37 @@ std::string safe_name(std::string s) {
 
 }  // namespace
 
+int wrap_texture_coordinates(rt::MeshDesc& mesh) {
+  int outside = 0;
+  std::vector<rt::Vec3d> positions;
+  std::vector<std::array<double, 2>> uvs;
+  std::map<std::array<long, 3>, int> copy;  // (vertex, shift u, shift v) -> new vertex.
+  for (auto& tri : mesh.triangles) {
+    long shift[2];
+    for (int a = 0; a < 2; ++a) {
+      double lo = 1e300, hi = -1e300;
+      for (int k = 0; k < 3; ++k) {
+        lo = std::min(lo, mesh.uvs[tri[k]][a]);
+        hi = std::max(hi, mesh.uvs[tri[k]][a]);
+      }
+      shift[a] = lo >= 0 && hi <= 1 ? 0 : static_cast<long>(std::floor(lo));
+      outside += hi - shift[a] > 1 + 1e-6 && a == 0;
+    }
+    for (int k = 0; k < 3; ++k) {
+      auto [it, added] =
+          copy.emplace(std::array<long, 3>{tri[k], shift[0], shift[1]}, positions.size());
+      if (added) {
+        positions.push_back(mesh.positions[tri[k]]);
+        uvs.push_back({mesh.uvs[tri[k]][0] - shift[0], mesh.uvs[tri[k]][1] - shift[1]});
+      }
+      tri[k] = it->second;
+    }
+  }
+  mesh.positions.swap(positions);
+  mesh.uvs.swap(uvs);
+  return outside;
+}
+
 // An image file or embedded image, checked to be one the renderer decodes; -1 (and a
 // warning) when it is not.
 int TextureImporter::image_of(const std::string& where, const std::string& path, bool degamma) {
@@ -53,6 +85,11 @@ int TextureImporter::image_of(const std::string& where, const std::string& path,
     fs::path full(p);
     if (full.is_relative()) full = fs::path(file_).parent_path() / full;
     full = full.lexically_normal();
+    // Files often name the image where it was on the author's disc ("D:/models/wood.jpg"):
+    // the same name beside the model is what was meant.
+    std::error_code ec;
+    fs::path beside = fs::path(file_).parent_path() / full.filename();
+    if (!fs::exists(full, ec) && fs::exists(beside, ec)) full = beside;
     if (!readable_format(full.extension().string().substr(
             std::min<size_t>(1, full.extension().string().size())))) {
       report_.warn(where + "texture '" + path + "' is not PNG or JPEG: dropped");

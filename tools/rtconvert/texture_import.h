@@ -13,6 +13,12 @@
 
 namespace rtconvert {
 
+// The other formats repeat a texture outside [0, 1]^2, the course clamps to the edge
+// texels. Each triangle whose coordinates leave [0, 1] is moved by whole repeats to start
+// in [0, 1) (its vertices copied where triangles sharing them move differently); returns
+// the number of triangles still outside, which span more than one repeat.
+int wrap_texture_coordinates(rt::MeshDesc& mesh);
+
 class TextureImporter {
  public:
   // `srgb`: the file's colour textures are sRGB-encoded (glTF says so), so the maps get
