@@ -18,3 +18,7 @@ add_executable(convert_wrap_tests convert_wrap_test.cpp)
 target_link_libraries(convert_wrap_tests PRIVATE rtconvert_lib GTest::gtest_main)
 gtest_discover_tests(convert_wrap_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX convert.
                      PROPERTIES LABELS convert)
+add_executable(convert_lights_tests convert_lights_test.cpp)
+target_link_libraries(convert_lights_tests PRIVATE rtconvert_lib GTest::gtest_main)
+gtest_discover_tests(convert_lights_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX convert.
+                     PROPERTIES LABELS convert)

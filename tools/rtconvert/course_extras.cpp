@@ -135,6 +135,31 @@ PointLight point_light_from_json(const json& j) {
   return p;
 }
 
+json device_light_to_json(const Light& l) {
+  return {{"type", l.type == RT_LIGHT_SPOT ? "spot" : "directional"},
+          {"position", to_json(l.position)},
+          {"direction", to_json(l.normal)},
+          {"emission", to_json(l.emission)},
+          {"cosFalloff", l.param0},
+          {"cosCoverage", l.param1}};
+}
+
+Light device_light_from_json(const json& j) {
+  Light l{};
+  const std::string type = j.at("type").get<std::string>();
+  if (type != "spot" && type != "directional")
+    throw ConvertError("light type '" + type + "' is neither spot nor directional");
+  l.type = type == "spot" ? RT_LIGHT_SPOT : RT_LIGHT_DIRECTIONAL;
+  l.position = float3_from(j.at("position"));
+  l.normal = float3_from(j.at("direction"));
+  l.emission = float3_from(j.at("emission"));
+  if (l.type == RT_LIGHT_SPOT) {
+    l.param0 = j.at("cosFalloff").get<float>();
+    l.param1 = j.at("cosCoverage").get<float>();
+  }
+  return l;
+}
+
 json settings_to_json(const rt::SceneDesc& s) {
   return {{"backgroundColor", to_json(s.background)},
           {"ambientLight", to_json(s.ambient)},

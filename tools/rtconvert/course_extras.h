@@ -32,6 +32,9 @@ json area_light_to_json(const AreaLight& a);
 AreaLight area_light_from_json(const json& j);
 json point_light_to_json(const PointLight& p);
 PointLight point_light_from_json(const json& j);
+// Directional and spot lights (SceneDesc::lights of those types), member by member.
+json device_light_to_json(const Light& l);
+Light device_light_from_json(const json& j);
 // Background, ambient light, epsilons and recursion depth.
 json settings_to_json(const rt::SceneDesc& s);
 void settings_from_json(const json& j, rt::SceneDesc& s);

@@ -26,8 +26,14 @@ void warn_dropped(const rt::SceneDesc& s, const std::string& path, const std::st
     spot += l.type == RT_LIGHT_SPOT;
     environment += l.type == RT_LIGHT_ENVIRONMENT;
   }
-  if (directional) warn(count(directional, "DirectionalLight") + " not converted");
-  if (spot) warn(count(spot, "SpotLight") + " not converted");
+  // glTF (extras) and XML keep directional and spot lights, pbrt approximates spots.
+  if (obj && directional)
+    warn("OBJ has no lights: " + count(directional, "DirectionalLight") + " lost");
+  if (obj && spot) warn("OBJ has no lights: " + count(spot, "SpotLight") + " lost");
+  if (pbrt && spot)
+    warn(count(spot, "SpotLight") +
+         " as pbrt's \"spot\", whose falloff between FalloffAngle "
+         "and CoverageAngle is a smoothstep");
   if (environment)
     warn(count(environment, "SphericalDirectionalLight") + " (environment map) not converted");
 

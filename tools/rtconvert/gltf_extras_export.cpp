@@ -134,6 +134,9 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path,
         texture_to_json(t, t.image < 0 ? -1 : static_cast<int>(first_image) + t.image,
                         t.image >= 0 && images[t.image].degamma));
   scene["extras"][kExtrasKey]["backgroundTexture"] = s.background_texture;
+  for (const Light& l : s.lights)
+    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_SPOT)
+      scene["extras"][kExtrasKey]["lights"].push_back(device_light_to_json(l));
   for (const AreaLight& a : s.area_lights)
     scene["extras"][kExtrasKey]["areaLights"].push_back(area_light_to_json(a));
   if (!s.area_lights.empty())

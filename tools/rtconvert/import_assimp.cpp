@@ -325,6 +325,8 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
     textures_from_json(*scene_extras, gltf_, file_, out_);
     for (const json& a : scene_extras->value("areaLights", json::array()))
       s.area_lights.push_back(area_light_from_json(a));
+    for (const json& l : scene_extras->value("lights", json::array()))
+      s.lights.push_back(device_light_from_json(l));
     // Materials in the exporter's order (material0, material1, ...), by name.
     std::map<int, Material> by_index;
     for (const json& m : gltf_.value("materials", json::array()))

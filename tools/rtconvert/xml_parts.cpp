@@ -1,4 +1,5 @@
 // The course XML elements of materials, BRDFs, cameras, lights and textures.
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -142,6 +143,23 @@ void write_lights(std::ostream& x, const rt::SceneDesc& s) {
       << "</Position>\n      <EdgeVector1>" << vec(a.edge1) << "</EdgeVector1>\n"
       << "      <EdgeVector2>" << vec(a.edge2) << "</EdgeVector2>\n      <Intensity>"
       << vec(a.radiance) << "</Intensity>\n    </AreaLight>\n";
+  }
+  // Directional and spot lights in the device form the loader made: the direction is
+  // already unit length, the cone angles come back from their cosines.
+  size_t id = s.point_lights.size() + s.area_lights.size();
+  for (const Light& l : s.lights) {
+    if (l.type == RT_LIGHT_DIRECTIONAL)
+      x << "    <DirectionalLight id=\"" << ++id << "\">\n      <Direction>" << vec(l.normal)
+        << "</Direction>\n      <Radiance>" << vec(l.emission)
+        << "</Radiance>\n    </DirectionalLight>\n";
+    if (l.type == RT_LIGHT_SPOT)
+      x << "    <SpotLight id=\"" << ++id << "\">\n      <Position>" << vec(l.position)
+        << "</Position>\n      <Direction>" << vec(l.normal) << "</Direction>\n      <Intensity>"
+        << vec(l.emission) << "</Intensity>\n      <CoverageAngle>"
+        << num(std::acos(static_cast<double>(l.param1)) * 360 / M_PI)
+        << "</CoverageAngle>\n      <FalloffAngle>"
+        << num(std::acos(static_cast<double>(l.param0)) * 360 / M_PI)
+        << "</FalloffAngle>\n    </SpotLight>\n";
   }
   x << "  </Lights>\n";
 }
