@@ -104,6 +104,10 @@ Material material_from_json(const json& j) {
   m.roughness = j.at("roughness").get<float>();
   m.brdf = j.value("brdf", 0);
   m.brdf_flags = j.value("brdfFlags", 0);
+  // The XML writer names the model and flags from these: anything else is malformed.
+  if (m.brdf < 0 || m.brdf > 4 || m.brdf_flags < 0 || m.brdf_flags > 3)
+    throw ConvertError("extras: material brdf " + std::to_string(m.brdf) + ", brdfFlags " +
+                       std::to_string(m.brdf_flags) + " name no BRDF of the course");
   return m;
 }
 
@@ -148,7 +152,7 @@ Light device_light_from_json(const json& j) {
   Light l{};
   const std::string type = j.at("type").get<std::string>();
   if (type != "spot" && type != "directional")
-    throw ConvertError("light type '" + type + "' is neither spot nor directional");
+    throw ConvertError("extras: light type '" + type + "' is neither spot nor directional");
   l.type = type == "spot" ? RT_LIGHT_SPOT : RT_LIGHT_DIRECTIONAL;
   l.position = float3_from(j.at("position"));
   l.normal = float3_from(j.at("direction"));
@@ -212,25 +216,21 @@ json read_gltf_json(const std::string& path) {
   return j;
 }
 
-void rewrite_glb_json(const std::string& path, json gltf, const std::vector<GlbImage>& images) {
+void rewrite_glb_json(const std::string& path, json gltf, const std::vector<std::string>& blobs) {
   std::string bytes = read_all(path);
   if (bytes.size() < 20 || u32(bytes, 0) != kGlbMagic || u32(bytes, 16) != kChunkJson)
     throw ConvertError(path + ": Assimp wrote no GLB JSON chunk");
   std::string rest = bytes.substr(20 + u32(bytes, 12));  // The binary chunk, if any.
   auto put = [](std::string& out, uint32_t v) { out.append(reinterpret_cast<char*>(&v), 4); };
-  if (!images.empty()) {
-    // The binary chunk is buffer 0; images go after its data, each 4-byte aligned.
+  if (!blobs.empty()) {
+    // The binary chunk is buffer 0; the blobs go after its data, each 4-byte aligned.
     std::string data = rest.size() >= 8 ? rest.substr(8, u32(rest, 0)) : std::string();
     if (!gltf.contains("buffers") || gltf["buffers"].empty()) gltf["buffers"] = {json::object()};
-    for (const GlbImage& image : images) {
+    for (const std::string& blob : blobs) {
       while (data.size() % 4) data += '\0';
-      const bool png = image.bytes.size() > 4 && image.bytes.compare(1, 3, "PNG") == 0;
-      gltf["images"].push_back({{"name", image.name},
-                                {"bufferView", gltf["bufferViews"].size()},
-                                {"mimeType", png ? "image/png" : "image/jpeg"}});
       gltf["bufferViews"].push_back(
-          {{"buffer", 0}, {"byteOffset", data.size()}, {"byteLength", image.bytes.size()}});
-      data += image.bytes;
+          {{"buffer", 0}, {"byteOffset", data.size()}, {"byteLength", blob.size()}});
+      data += blob;
     }
     while (data.size() % 4) data += '\0';
     gltf["buffers"][0]["byteLength"] = data.size();

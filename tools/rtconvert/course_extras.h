@@ -41,20 +41,17 @@ void settings_from_json(const json& j, rt::SceneDesc& s);
 
 // The JSON of a .glb or .gltf file; a null value when the file is neither.
 json read_gltf_json(const std::string& path);
-// A PNG or JPEG file to embed in a .glb: its name (without extension) and bytes.
-struct GlbImage {
-  std::string name, bytes;
-};
-// Replaces the JSON chunk of a .glb file, keeping its binary chunk; each of `images` is
-// appended to the binary chunk as a bufferView and becomes glTF image
-// gltf["images"].size() + k.
-void rewrite_glb_json(const std::string& path, json gltf, const std::vector<GlbImage>& images = {});
+// Replaces the JSON chunk of a .glb file, keeping its binary chunk; each of `blobs` (image
+// files) is appended to the binary chunk as bufferView gltf["bufferViews"].size() + k,
+// which the caller's JSON may already name.
+void rewrite_glb_json(const std::string& path, json gltf,
+                      const std::vector<std::string>& blobs = {});
 // The bytes of bufferView `view` of a .glb file's binary chunk.
 std::string read_glb_view(const std::string& path, const json& gltf, int view);
 
-// Texture maps (scene extras "textures", "backgroundTexture"); `gltf_image` is the glTF
-// image of an image texture, -1 for the procedural ones.
-json texture_to_json(const rt::TextureMapDesc& t, int gltf_image, bool degamma);
+// Texture maps (scene extras "textures", "backgroundTexture", and "images": each image's
+// bufferView and file name, for any format the course reads, not only glTF's PNG and JPEG).
+json texture_to_json(const rt::TextureMapDesc& t, bool degamma);
 // The course's texture maps of an rtconvert .glb, their images taken out of its binary
 // chunk (written beside the XML by write_course_xml).
 void textures_from_json(const json& scene_extras, const json& gltf, const std::string& file,

@@ -384,6 +384,10 @@ ImportedScene import_with_assimp(const std::string& path, int default_width, boo
     return Importer(path, report).run(default_width, use_extras);
   } catch (const json::exception& e) {
     throw ConvertError(path + ": glTF extras." + kExtrasKey + " malformed: " + e.what());
+  } catch (const ConvertError& e) {
+    // The extras' readers do not know the file: their messages start with "extras".
+    if (std::string(e.what()).rfind("extras", 0) != 0) throw;
+    throw ConvertError(path + ": glTF " + e.what());
   }
 }
 

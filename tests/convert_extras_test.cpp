@@ -1,6 +1,6 @@
-// Directional and spot lights through rtconvert's glTF extras and its XML writer: the
-// device values the loader made (unit direction, cosines of the half cone angles) come
-// back with the same bits, so the renders are identical.
+// rtconvert's glTF extras: directional and spot lights through them and through the XML
+// writer come back with the same bits (the loader's unit direction, cosines of the half
+// cone angles); out-of-range values in a file's extras are refused in one line.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "convert.h"
+#include "course_extras.h"
 
 namespace rtconvert {
 namespace {
@@ -54,6 +55,37 @@ TEST(ConvertLights, DirectionalAndSpotLightsComeBackBitForBit) {
       EXPECT_EQ(la.param1, lb.param1) << back << " light " << i;
     }
   }
+  fs::remove_all(dir);
+}
+
+TEST(ConvertExtras, OutOfRangeValuesAreRefusedNamingTheFileAndElement) {
+  char tmpl[] = "/tmp/rtconvert_extras_XXXXXX";
+  ASSERT_NE(mkdtemp(tmpl), nullptr);
+  const fs::path dir = tmpl;
+  const std::string scene = std::string(RT_SHARED_SCENES_DIR) + "/hw4/wood_box_all.xml";
+  if (!fs::exists(scene)) GTEST_SKIP() << scene << " is not present (../shared/scenes)";
+  rt::SceneDesc a = rt::load_scene(scene);
+  Report r;
+  const std::string glb = (dir / "w.glb").string();
+  export_with_assimp(a, glb, "glb2", r, course_image_files(scene, a));
+  const json good = read_gltf_json(glb);
+  for (const char* field : {"decal", "type", "image"}) {
+    json g = good;
+    g["scenes"][0]["extras"][kExtrasKey]["textures"][1][field] = 99;
+    rewrite_glb_json(glb, g);
+    try {
+      import_with_assimp(glb, 64, true, r);
+      ADD_FAILURE() << field << " 99 was accepted";
+    } catch (const ConvertError& e) {
+      const std::string m = e.what();
+      EXPECT_EQ(m.find(glb + ": extras.ceng795.textures[1]: a value is out of range"), 0u) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  }
+  json g = good;
+  g["materials"][0]["extras"][kExtrasKey]["brdf"] = 7;
+  rewrite_glb_json(glb, g);
+  EXPECT_THROW(import_with_assimp(glb, 64, true, r), ConvertError);
   fs::remove_all(dir);
 }
 
