@@ -60,9 +60,8 @@ int main(int argc, char** argv) {
     // Before anything is read or written: an output that is the input would replace the
     // scene by a lossy rewrite of itself. An OBJ export writes its MTL file too.
     rtconvert::check_not_input(o.input, o.output);
-    if (out == "obj")
-      rtconvert::check_not_input(o.input, o.output.substr(0, o.output.size() - 3) +
-                                              (o.output.back() == 'J' ? "MTL" : "mtl"));
+    if (out == "obj")  // Assimp names it after the OBJ, with ".mtl" in lower case.
+      rtconvert::check_not_input(o.input, o.output.substr(0, o.output.size() - 3) + "mtl");
     if (in == "xml") {
       if (out != "glb" && out != "obj" && out != "pbrt" && out != "xml")
         throw rtconvert::ConvertError(o.output + ": cannot export to '." + out +

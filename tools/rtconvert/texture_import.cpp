@@ -90,8 +90,8 @@ int TextureImporter::image_of(const std::string& where, const std::string& path,
     std::error_code ec;
     fs::path beside = fs::path(file_).parent_path() / full.filename();
     if (!fs::exists(full, ec) && fs::exists(beside, ec)) full = beside;
-    if (!readable_format(full.extension().string().substr(
-            std::min<size_t>(1, full.extension().string().size())))) {
+    const std::string extension = full.extension().string();  // ".png", or "".
+    if (!readable_format(extension.empty() ? extension : extension.substr(1))) {
       report_.warn(where + "texture '" + path + "' is not PNG or JPEG: dropped");
       return images_[{path, degamma}] = -1;
     }
