@@ -131,7 +131,7 @@ def ptxas_resources(ptxas, ptx_path, target, entry="render"):
 
 
 # Instructions that compute in double: AMD's VALU/SALU f64 opcodes, PTX's .f64 types.
-AMD_F64 = re.compile(r"^\s*[vs]_\w*f64\b")
+AMD_F64 = re.compile(r"^\s*[vs]_\w*f64")
 PTX_F64 = re.compile(r"^\s*(?:@!?%\w+\s+)?[a-z][\w.]*\.f64\b")
 
 

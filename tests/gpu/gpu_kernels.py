@@ -170,7 +170,7 @@ def print_table(budgets, features, results, ptx_note):
                                                " | ".join(cells)))
 
 
-def check(budgets, results, known):
+def check(budgets, results, known, known_path):
     """Prints each limited figure against its ceiling and target; returns the failures."""
     failures = []
     for name, precision, target, limits in budgets:
@@ -193,12 +193,12 @@ def check(budgets, results, known):
                                                                       ceiling))
     seen = {w for r in results.values() for w in r["warnings"]}
     for w in sorted(seen - set(known)):
-        failures.append("warning at -Wall -Wextra, not in tests/gpu/known_warnings.txt: " + w)
+        failures.append("warning at -Wall -Wextra, not in %s: %s" % (known_path, w))
     for w in sorted(set(known) - seen):
-        failures.append("known warning no longer produced (remove it from "
-                        "tests/gpu/known_warnings.txt): " + w)
+        failures.append("known warning no longer produced (remove it from %s): %s" %
+                        (known_path, w))
     for w in sorted(seen & set(known)):
-        print("known warning (tests/gpu/known_warnings.txt): " + w)
+        print("known warning (%s): %s" % (known_path, w))
     return failures
 
 
@@ -258,7 +258,7 @@ def main():
     if args.ceilings:
         print_ceilings(budgets, results)
         return 0
-    failures = check(budgets, results, known) if args.check else \
+    failures = check(budgets, results, known, args.known_warnings) if args.check else \
         [e for r in results.values() for e in r["errors"]]
     for f in failures:
         print("FAIL: " + f)
