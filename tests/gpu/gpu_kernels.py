@@ -138,7 +138,10 @@ def measure(job, features, work, use_ptxas):
     else:
         result["figures"] = gc.ptx_resources(text)
         if use_ptxas:
-            result["figures"].update(gc.ptxas_resources(use_ptxas, out, target))
+            try:
+                result["figures"].update(gc.ptxas_resources(use_ptxas, out, target))
+            except RuntimeError as e:
+                result["errors"].append(str(e))
     if precision == "float":
         doubles = gc.double_instructions(text, target)
         if doubles:
