@@ -22,7 +22,9 @@ import subprocess
 import sys
 import tempfile
 
-import gpu_compile as gc
+# No __pycache__ beside the sources: the test runs from the source tree.
+sys.dont_write_bytecode = True
+import gpu_compile as gc  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
