@@ -3,11 +3,14 @@
 # sudo). Does nothing when every package is already installed.
 # chromium: the test that `compare report` pages open in a browser with every image loaded
 # (tests/compare/report_browser.sh, headless); without it that test is skipped.
+# clang-16 and libclc-16: the gpu_compile test and bench/gpu_resources.sh compile the OpenCL
+# kernel offline for AMD and NVIDIA GPUs (docs/gpu.md). Version 16 is the one whose register
+# and scratch figures tests/gpu/budgets.txt holds: another LLVM allocates differently.
 set -eu
 PACKAGES="cmake g++ make pkg-config libtinyxml2-dev libpng-dev libjpeg62-turbo-dev zlib1g-dev ocl-icd-opencl-dev
   opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo libgtest-dev libopenexr-dev
   libopenmpi-dev openmpi-bin libassimp-dev nlohmann-json3-dev assimp-testmodels clang
-  libclang-rt-14-dev libembree-dev python3 chromium"
+  libclang-rt-14-dev libembree-dev python3 chromium clang-16 libclc-16"
 missing=""
 for p in $PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
