@@ -123,8 +123,8 @@ rt::OptionTable<Args> make_table() {
 
 // Renders the blocks (block x block pixels) whose block coordinates are multiples of
 // `stride`, into a compact image of just those pixels.
-rt::Image8 render_subset(const rt::FlatScene& flat, int block, int stride, rt::Image8* ref_out,
-                         const rt::Image8& ref, const PixelEncoder& encoder) {
+rt::Image8 render_subset(const rt::FlatScene& flat, bool in_double, int block, int stride,
+                         rt::Image8* ref_out, const rt::Image8& ref, const PixelEncoder& encoder) {
   const Camera& cam = flat.header.camera;
   int bx = cam.width / block, by = cam.height / block;
   int nx = (bx + stride - 1) / stride, ny = (by + stride - 1) / stride;
@@ -135,7 +135,7 @@ rt::Image8 render_subset(const rt::FlatScene& flat, int block, int stride, rt::I
   *ref_out = out;
   SceneData sd = flat.view();
   const rt::CpuPixelFunction accumulate =
-      flat.double_precision ? rt::accumulate_pixel_double : rt::accumulate_pixel_float;
+      in_double ? rt::accumulate_pixel_double : rt::accumulate_pixel_float;
   std::vector<std::thread> pool;
   int threads = std::max(1u, std::thread::hardware_concurrency());
   for (int t = 0; t < threads; ++t)
@@ -182,8 +182,9 @@ int main(int argc, char** argv) {
     // The CPU reference computes in double, so --precision auto is double here.
     std::string notice;
     a.render.precision = rt::resolve_precision(a.render.precision, true, "cpu-reference", &notice);
-    rt::FlatScene flat = rt::flatten_scene(scene, a.render);
-    rt::set_camera(flat, scene, a.camera, a.render);
+    const bool in_double = rt::kernel_config(a.render).double_precision;
+    rt::FlatScene flat = rt::prepare_scene(scene, a.render);
+    rt::prepare_camera(flat, scene, a.camera, a.render);
     rt::Image8 ref = rt::read_png(files[1]);
     const Camera& cam = flat.header.camera;
     if (ref.width != cam.width || ref.height != cam.height) {
@@ -211,7 +212,7 @@ int main(int argc, char** argv) {
       encoder.scale = rt::PhotographicStatistics(rt::read_exr(exr), desc.tonemap_params);
     }
     rt::Image8 ref_subset;
-    rt::Image8 img = render_subset(flat, block, stride, &ref_subset, ref, encoder);
+    rt::Image8 img = render_subset(flat, in_double, block, stride, &ref_subset, ref, encoder);
     rt::ImageDiff full = rt::diff_images(ref_subset, img, 8);
     rt::ImageDiff down = rt::diff_images(rt::downsample(ref_subset, 4), rt::downsample(img, 4), 8);
     // Signed mean of render minus reference: a conversion one level off shows here first.
@@ -229,7 +230,7 @@ int main(int argc, char** argv) {
     double min_identical = a.min_identical > 0 ? a.min_identical
                            : hw3 || by_block   ? 0
                                                : kHw12Identical;
-    if (flat.double_precision && a.double_min_identical > 0) min_identical = a.double_min_identical;
+    if (in_double && a.double_min_identical > 0) min_identical = a.double_min_identical;
     bool ok = hw3 ? (down.mae <= kHw3DownMae && full.mae <= kHw3Mae &&
                      std::abs(bias) <= (a.max_bias >= 0 ? a.max_bias : kHw3Bias))
                   : (full.mae <= kHw12Mae && full.frac_over <= kHw12Over8);

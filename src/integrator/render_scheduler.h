@@ -58,12 +58,13 @@ class RenderScheduler {
   std::vector<double> row_cost_;  // Seconds per sample of each row, as last measured.
 };
 
-// Renders the camera of `flat` on `device` under the policy above. `cancel`, when set,
+// Renders the camera of `flat` on `device`, with the kernel `kernel` configures, under the
+// policy above. `cancel`, when set,
 // stops sampling at the end of the current pass (RenderResult::cancelled). *load_info
 // receives what loading the scene cost. Throws std::runtime_error (one line) on a device
 // failure.
-RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress& progress,
-                           const StopRule& stop = StopRule(),
+RenderResult render_camera(RenderDevice& device, const FlatScene& flat, const KernelConfig& kernel,
+                           Progress& progress, const StopRule& stop = StopRule(),
                            const std::atomic<bool>* cancel = nullptr,
                            DeviceLoadInfo* load_info = nullptr);
 
