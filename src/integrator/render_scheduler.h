@@ -14,8 +14,8 @@
 // the time limit, or when the estimated relative noise is below the target. A pass
 // after which the samples left would make a last pass no larger than it takes them too (at
 // most twice its planned samples, its bands then half as tall): the fourfold growth only
-// guards the estimate, and each pass costs every pixel its setup again (tap_0200 at 9
-// samples: 1 + 8 instead of 1 + 4 + 4, ~8 % less CPU per sample). Under a stop rule the
+// guards the estimate, and each pass costs every pixel its setup again (at 9 samples:
+// passes of 1 + 8 instead of 1 + 4 + 4, one setup fewer). Under a stop rule the
 // passes stay fourfold, as the points where it is checked.
 #pragma once
 

@@ -45,8 +45,8 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   // keeps every thread busy to its end. Each pixel is taken by one thread, which adds its
   // samples in order: the image does not depend on the thread count. A chunk gives every
   // thread about 16 (its last one then a small part of its work), from 16 to 256 pixels:
-  // long runs of film records let each core's prefetcher stay ahead (tap_0200's camera rays
-  // on two threads took 6 % more CPU time with 16-pixel chunks than with 256).
+  // long runs of film records let each core's prefetcher stay ahead, where short chunks
+  // leave it restarting on every chunk.
   const size_t chunk = std::clamp<size_t>(count / (16 * static_cast<size_t>(threads_)), 16, 256);
   const int chunks = static_cast<int>((count + chunk - 1) / chunk);
   // Each thread copies the loop's values (parallel_for copies fn): read through references
