@@ -196,11 +196,11 @@ ArrayCounts camera_array_counts(const FlatScene& f, const SceneDesc& scene,
   ArrayCounts c = array_counts(f);
   uint64_t instances = 0, object_lights = 0, light_areas = 0;
   for (const ObjectDesc& o : scene.objects) {
-    const bool sphere = o.kind == ObjectDesc::kSphere;
-    if (!sphere && f.meshes[o.mesh].blas_root < 0) continue;  // Not placed (frame_instances).
+    if (!is_placed(o, f.meshes)) continue;
     ++instances;
     object_lights += o.emits;
-    if (o.emits && !sphere) light_areas += scene.meshes[o.mesh].triangles.size();
+    if (o.emits && o.kind == ObjectDesc::kMesh)
+      light_areas += scene.meshes[o.mesh].triangles.size();
   }
   c.instances = c.instance_textures = c.instance_lights = instances;
   c.nodes = f.blas_nodes + std::max<uint64_t>(instances, 1) * wide_units(width);

@@ -142,9 +142,9 @@ FramedInstances frame_instances(const SceneDesc& scene, const std::vector<FlatMe
   unit.grow(-1, -1, -1);
   unit.grow(1, 1, 1);
   for (const ObjectDesc& o : scene.objects) {
+    if (!is_placed(o, meshes)) continue;  // Nothing left after degenerates.
     bool sphere = o.kind == ObjectDesc::kSphere;
     const FlatMesh* mesh = sphere ? nullptr : &meshes[o.mesh];
-    if (!sphere && mesh->blas_root < 0) continue;  // Nothing left after degenerates.
     Instance inst{};
     const Mat4 to_frame = object_to_frame(o, sphere ? Vec3d{} : mesh->origin, origin);
     bool ok;

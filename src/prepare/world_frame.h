@@ -41,6 +41,11 @@ Mat4 object_to_frame(const ObjectDesc& object, Vec3d mesh_origin, Vec3d world_or
 // identity).
 bool keeps_world_direction(const Mat4& to_frame);
 
+// Whether `object` gets an instance: a sphere, or a mesh that kept a triangle.
+inline bool is_placed(const ObjectDesc& object, const std::vector<FlatMesh>& meshes) {
+  return object.kind == ObjectDesc::kSphere || meshes[object.mesh].blas_root >= 0;
+}
+
 // The scene's objects placed in the frame whose origin is the world point `origin`, in the
 // objects' order, leaving out those whose mesh kept no triangle (`meshes` per
 // SceneDesc::meshes): entry i of each vector belongs to object `object[i]`.
