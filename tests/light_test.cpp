@@ -170,8 +170,7 @@ TEST(LightArray, FlattenTagsPointLightsFirstAndNumbersTheSampledOnes) {
   EXPECT_EQ(f.lights[1].sample_index, 0);
   EXPECT_EQ(f.lights[2].sample_index, 1);
   EXPECT_EQ(f.lights[2].area, 1.0f);
-  EXPECT_EQ(f.header.features & (RT_LIGHT_POINT | RT_LIGHT_AREA),
-            RT_LIGHT_POINT | RT_LIGHT_AREA);
+  EXPECT_EQ(f.header.features & (RT_LIGHT_POINT | RT_LIGHT_AREA), RT_LIGHT_POINT | RT_LIGHT_AREA);
 }
 
 }  // namespace
