@@ -4,7 +4,7 @@
 // (rtcIntersect16), in one thread, in Mrays per CPU-second of that thread. The rays are
 // those the renderer casts (cl/camera/camera.h, GenerateCameraSample), and every tracer's hit
 // distances are compared with ours, so what is timed is checked to be the same work.
-// With --build, also the BVH build at 1 and 2 threads: ours (flatten_scene, all the
+// With --build, also the BVH build at 1 and 2 threads: ours (prepare_scene, all the
 // renderer pays before the first sample) against Embree's HIGH commit, wall and CPU time,
 // and whether our tree is the same whatever the thread count.
 //
@@ -235,8 +235,8 @@ int TraceComparison(const Args& a, const rt::SceneDesc& desc, rt::RenderOptions 
   // World-space rays and triangles, as Embree's scene holds them (the renderer's default
   // frame is relative to the camera, whose rays would all miss Embree's geometry).
   opt.camera_frame = false;
-  rt::FlatScene flat = rt::flatten_scene(desc, opt);
-  rt::set_camera(flat, desc, a.camera, opt);
+  rt::FlatScene flat = rt::prepare_scene(desc, opt);
+  rt::prepare_camera(flat, desc, a.camera, opt);
   RaySet set = CameraRays(flat);
   if (a.ours_only) {  // For comparing two builds of ours: Embree's part is then only noise.
     std::vector<float> t(set.rays.size());
@@ -293,7 +293,7 @@ int BuildComparison(const Args& a, const rt::SceneDesc& desc, rt::RenderOptions 
     for (int r = 0; r < a.reps; ++r) {
       opt.bvh.threads = threads;
       double w0 = WallSeconds(), c0 = ProcessCpuSeconds();
-      rt::FlatScene flat = rt::flatten_scene(desc, opt);
+      rt::FlatScene flat = rt::prepare_scene(desc, opt);
       ow.push_back(WallSeconds() - w0);
       oc.push_back(ProcessCpuSeconds() - c0);
       if (first.nodes.empty())

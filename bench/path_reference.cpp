@@ -117,7 +117,7 @@ int run(const std::string& scene_file, const std::string& refdir, const Options&
   rt::RenderOptions ro;
   ro.seed = o.seed;
   ro.spp = o.spp;
-  rt::FlatScene flat = rt::flatten_scene(scene, ro);
+  rt::FlatScene flat = rt::prepare_scene(scene, ro);
   bool failed = false, skipped = false;
   std::printf("%-30s %4s %6s %6s %11s | %6s %6s %6s %5s %5s | %6s %6s %6s %5s | %6s\n", "camera",
               "spp", "pixels", "mean", "zero% me/rf", "MAE", "floorP", "floorH", "r(P)", "r(H)",
@@ -136,7 +136,7 @@ int run(const std::string& scene_file, const std::string& refdir, const Options&
       skipped = true;
       continue;
     }
-    rt::set_camera(flat, scene, static_cast<int>(c), ro);
+    rt::prepare_camera(flat, scene, static_cast<int>(c), ro);
     const Camera& cam = flat.header.camera;
     Subset sub = rt::bench::make_subset(cam, o.budget);
     rt::ImageF ref = rt::read_exr(ref_exr), partner = rt::read_exr(par_exr);

@@ -156,8 +156,8 @@ int run(const std::string& scene_file, int camera, const std::string& ref_exr,
   rt::RenderOptions ro;
   ro.seed = o.seed;
   ro.spp = o.spp;
-  rt::FlatScene flat = rt::flatten_scene(scene, ro);
-  rt::set_camera(flat, scene, camera, ro);
+  rt::FlatScene flat = rt::prepare_scene(scene, ro);
+  rt::prepare_camera(flat, scene, camera, ro);
   Rendered r;
   if (!o.load.empty()) {
     r = load(o.load);

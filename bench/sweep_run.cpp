@@ -11,7 +11,6 @@
 #include <functional>
 #include <stdexcept>
 
-#include "prepare/flat_scene.h"
 #include "integrator/render_scheduler.h"
 
 namespace sweep {
@@ -53,18 +52,18 @@ rt::RenderDevice* Open(const Config& c, rt::DevicePool& devices) {
 Timed Render(rt::SceneDesc& scene, const Config& c, int camera, rt::DevicePool& devices, int reps) {
   CameraOverride use(scene, camera, c.path_flags);
   rt::RenderDevice* device = Open(c, devices);
-  rt::RenderOptions opt = c.opt;
-  opt.bvh.width = rt::resolve_bvh_width(opt.bvh.width, *device);  // As the executable does.
-  rt::FlatScene flat = rt::flatten_scene(scene, opt);
-  rt::set_camera(flat, scene, camera, opt);
-  device->load(flat);  // Builds (or finds) the program: not part of the timed render.
+  std::string notice;  // As the executable prepares it.
+  rt::PreparedScene prepared = rt::prepare_for_device(scene, c.opt, *device, &notice);
+  rt::prepare_camera(prepared, scene, camera);
+  const rt::FlatScene& flat = prepared.flat;
+  device->load(flat, prepared.kernel);  // Builds (or finds) the program: not part of the timing.
   rt::Progress quiet(false, "", 0);
   std::vector<Timed> runs;
   for (int k = 0; k < std::max(1, reps); ++k) {
     Timed t;
     t.build_ms = flat.stats.bvh_build_ms;
     const double start = ProcessCpuSeconds();
-    t.result = rt::render_camera(*device, flat, quiet,
+    t.result = rt::render_camera(*device, flat, prepared.kernel, quiet,
                                  rt::camera_stop_rule(c.opt.stop, scene.cameras[camera]));
     t.cpu_seconds = ProcessCpuSeconds() - start;
     runs.push_back(std::move(t));

@@ -203,7 +203,7 @@ if [ -n "$embree" ]; then
   printf '%s\n' "${embree_rows[@]}"
   if [ ${#build_rows[@]} -gt 0 ]; then
     echo
-    echo "BVH build, medians of $reps: ours is all of flatten_scene (what the renderer waits"
+    echo "BVH build, medians of $reps: ours is all of prepare_scene (what the renderer waits"
     echo "for), Embree's is rtcCommitScene at quality HIGH; same tree: ours at 1 and 2 threads."
     echo
     echo "| scene | triangles | threads | ours wall s | ours CPU s | Embree HIGH wall s | Embree CPU s | same tree |"

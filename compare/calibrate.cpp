@@ -96,7 +96,7 @@ rt::MomentImage render(Variant& v, uint32_t seed, int threads) {
   v.flat.header.seed = seed;
   rt::Progress quiet(false, "", 0);
   rt::CpuDevice cpu(threads);
-  rt::RenderResult r = rt::render_camera(cpu, v.flat, quiet);
+  rt::RenderResult r = rt::render_camera(cpu, v.flat, rt::KernelConfig(), quiet);
   rt::MomentInfo info;
   info.seed = seed;
   info.spp = v.flat.header.camera.samples;
@@ -153,8 +153,8 @@ int main(int argc, char** argv) {
       v.bias = cmp::PlantedBias::parse(spec);
       rt::SceneDesc s = base;
       cmp::apply_bias(v.bias, cfg.camera, &s);
-      v.flat = rt::flatten_scene(s, ro);
-      rt::set_camera(v.flat, s, cfg.camera, ro);
+      v.flat = rt::prepare_scene(s, ro);
+      rt::prepare_camera(v.flat, s, cfg.camera, ro);
       variants.push_back(std::move(v));
     }
     width = cam.width;

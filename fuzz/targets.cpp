@@ -51,9 +51,9 @@ void fuzz_scene(const uint8_t* data, size_t size) {
     return;  // Refused with a message: the expected outcome for most inputs.
   }
   RenderOptions options;
-  FlatScene flat = flatten_scene(scene, options);
+  FlatScene flat = prepare_scene(scene, options);
   for (int c = 0; c < static_cast<int>(scene.cameras.size()); ++c)
-    set_camera(flat, scene, c, options);
+    prepare_camera(flat, scene, c, options);
 }
 
 void fuzz_ply(const uint8_t* data, size_t size) {

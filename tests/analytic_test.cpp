@@ -48,8 +48,8 @@ struct PixelStats {
 PixelStats RenderOnePixel(const rt::SceneDesc& scene, uint32_t seed = 0) {
   rt::RenderOptions opt;
   opt.seed = seed;
-  rt::FlatScene flat = rt::flatten_scene(scene, opt);
-  rt::set_camera(flat, scene, 0, opt);
+  rt::FlatScene flat = rt::prepare_scene(scene, opt);
+  rt::prepare_camera(flat, scene, 0, opt);
   rt::RenderResult r = rt::test::render_cpu(flat, 1);
   const PixelAccum& a = r.accum[0];
   double n = a.sum_sq.w, mean = a.sum.x / a.sum.w;

@@ -1,4 +1,4 @@
-// The parallel BVH build (bvh_build.h) and the parallel parts of flatten_scene around it:
+// The parallel BVH build (bvh_build.h) and the parallel parts of prepare_scene around it:
 // the same tree, the same primitive order and the same scene bytes whatever the thread
 // count, on inputs large enough for many parallel jobs, including the object-median
 // fallback above the subtree threshold.
@@ -106,11 +106,11 @@ TEST(BvhBuildThreads, FlattenedSceneIsTheSameBytesForOneAndTwoThreads) {
   const SceneDesc scene = Terrain(200);  // 80 000 triangles: several subtree jobs.
   RenderOptions opt;
   opt.bvh.threads = 1;
-  const FlatScene one = flatten_scene(scene, opt);
+  const FlatScene one = prepare_scene(scene, opt);
   for (int threads : {2, 3}) {
     SCOPED_TRACE("threads " + std::to_string(threads));
     opt.bvh.threads = threads;
-    const FlatScene many = flatten_scene(scene, opt);
+    const FlatScene many = prepare_scene(scene, opt);
     EXPECT_TRUE(SameBytes(one.nodes, many.nodes));
     EXPECT_TRUE(SameBytes(one.triangles, many.triangles));
     EXPECT_TRUE(SameBytes(one.normals, many.normals));

@@ -56,6 +56,7 @@ fs::path make_temp_dir(const std::string& tag) {
 struct Loaded {
   rt::SceneDesc scene;
   rt::FlatScene flat;
+  rt::KernelConfig kernel;
 };
 
 // The course's scenes live beside the clone (../shared); a clone elsewhere skips the tests
@@ -70,8 +71,9 @@ Loaded load(const std::string& rel, int spp, int size, int bvh_width = 0) {
   rt::RenderOptions opt;
   opt.spp = spp;
   opt.bvh.width = bvh_width;
-  l.flat = rt::flatten_scene(l.scene, opt);
-  rt::set_camera(l.flat, l.scene, 0, opt);
+  l.flat = rt::prepare_scene(l.scene, opt);
+  rt::prepare_camera(l.flat, l.scene, 0, opt);
+  l.kernel = rt::kernel_config(opt);
   // Fewer pixels over the same film: the pixel coordinates follow width and height.
   l.flat.header.camera.width = size;
   l.flat.header.camera.height = size;
@@ -82,11 +84,12 @@ rt::RenderResult render_on_cpu(const rt::FlatScene& flat) { return rt::test::ren
 
 // Renders on the shared device with the specialized or the generic kernel.
 rt::RenderResult render_on_cl(const rt::FlatScene& flat, bool generic,
-                              rt::DeviceLoadInfo* info = nullptr) {
+                              rt::DeviceLoadInfo* info = nullptr,
+                              const rt::KernelConfig& kernel = {}) {
   std::string why;
   rt::RenderDevice* device = shared_cl(&why, generic);
   if (!device) throw std::runtime_error("no OpenCL device: " + why);
-  return rt::test::render_on(*device, flat, {}, info);
+  return rt::test::render_on(*device, flat, {}, info, kernel);
 }
 
 // A new device with the disk cache on, as the executable opens it.
@@ -212,14 +215,14 @@ TEST(OpenCl, EveryBvhWidthRendersTheSameImage) {
       std::printf("[ skipped ] %s\n", e.what());
       continue;
     }
-    ASSERT_EQ(eight.flat.bvh_width, 8);
+    ASSERT_EQ(eight.kernel.bvh_width, 8);
     ASSERT_EQ(eight.flat.triangles.size(), four.flat.triangles.size());
     // Half as many elements would mean the host built 4-wide nodes in 8-wide storage.
     ASSERT_LT(eight.flat.stats.nodes, four.flat.stats.nodes);
     rt::DeviceLoadInfo info;
-    rt::RenderResult cl8 = render_on_cl(eight.flat, false, &info);
+    rt::RenderResult cl8 = render_on_cl(eight.flat, false, &info, eight.kernel);
     EXPECT_NE(info.build_options.find("-DRT_BVH_WIDTH=8"), std::string::npos);
-    rt::RenderResult cl4 = render_on_cl(four.flat, false);
+    rt::RenderResult cl4 = render_on_cl(four.flat, false, nullptr, four.kernel);
     rt::RenderResult cpu = render_on_cpu(four.flat);
     EXPECT_TRUE(identical(cl8, cpu));
     EXPECT_TRUE(identical(cl4, cpu));
@@ -234,7 +237,7 @@ TEST(OpenCl, EveryBvhWidthRendersTheSameImage) {
     EXPECT_EQ(other_hits, 0);
     // The CPU reference renders its own width only, and says so.
     rt::CpuDevice cpu_device(1);
-    EXPECT_THROW(cpu_device.load(eight.flat), std::runtime_error);
+    EXPECT_THROW(cpu_device.load(eight.flat, eight.kernel), std::runtime_error);
   }
 }
 

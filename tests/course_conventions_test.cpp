@@ -82,8 +82,8 @@ SceneDesc LeaningNormalScene() {
 double RenderRed(const SceneDesc& s, bool geometric_offset) {
   RenderOptions opt;
   opt.geometric_offset = geometric_offset;
-  FlatScene flat = flatten_scene(s, opt);
-  set_camera(flat, s, 0, opt);
+  FlatScene flat = prepare_scene(s, opt);
+  prepare_camera(flat, s, 0, opt);
   RenderResult r = test::render_cpu(flat, 1);
   return r.accum[0].sum.x / r.accum[0].sum.w;
 }

@@ -35,8 +35,8 @@ void ExpectSamePixels(const std::string& rel, int spp, int size) {
   rt::SceneDesc scene = rt::load_scene(kScenes + rel);
   rt::RenderOptions opt;
   opt.spp = spp;
-  rt::FlatScene flat = rt::flatten_scene(scene, opt);
-  rt::set_camera(flat, scene, 0, opt);
+  rt::FlatScene flat = rt::prepare_scene(scene, opt);
+  rt::prepare_camera(flat, scene, 0, opt);
   flat.header.camera.width = size;
   flat.header.camera.height = size;
   const SceneData sd = flat.view();

@@ -101,8 +101,8 @@ TEST(EnvironmentLightScene, ReadsMapMappingAndSampler) {
   EXPECT_EQ(d.lights[0].index, RT_ENV_LATLONG);  // The specification's mapping by default.
   EXPECT_EQ(d.lights[0].variant, RT_ENV_SAMPLE_IMPORTANCE);
   RenderOptions opt;
-  FlatScene flat = flatten_scene(d, opt);
-  set_camera(flat, d, 0, opt);
+  FlatScene flat = prepare_scene(d, opt);
+  prepare_camera(flat, d, 0, opt);
   EXPECT_NE(flat.header.features & RT_FEATURE_ENVIRONMENT_LIGHT, 0);
   EXPECT_EQ(flat.header.environment, 0);
   EXPECT_EQ(flat.env_marginal_cdf.size(), 5u);
@@ -177,8 +177,8 @@ TEST(EnvironmentLightScene, CourseSceneRendersWithAStandInMap) {
   WriteMap((dir.path / "textures/grace-new.exr").string(), w, h);
   SceneDesc s = load_scene((dir.path / "scene.xml").string());
   RenderOptions opt;
-  FlatScene flat = flatten_scene(s, opt);
-  set_camera(flat, s, 0, opt);
+  FlatScene flat = prepare_scene(s, opt);
+  prepare_camera(flat, s, 0, opt);
   flat.header.camera.width = 100;  // Fewer pixels over the same film.
   flat.header.camera.height = 50;
   RenderResult r = test::render_cpu(flat, 2);

@@ -151,8 +151,8 @@ RenderResult RenderCpu(const SceneDesc& s, int spp, uint32_t seed = 0) {
   RenderOptions opt;
   opt.spp = spp;
   opt.seed = seed;
-  FlatScene flat = flatten_scene(s, opt);
-  set_camera(flat, s, 0, opt);
+  FlatScene flat = prepare_scene(s, opt);
+  prepare_camera(flat, s, 0, opt);
   return test::render_cpu(flat, 2);
 }
 
@@ -271,8 +271,8 @@ TEST(EnvironmentLight, ImportanceSamplingFollowsItsDensity) {
     for (int c = 0; c < 3; ++c) s.environment_map.pixels[(2 * w + 5) * 3 + c] = 0.0f;  // Black.
     s.lights.push_back(Environment(mapping, RT_ENV_SAMPLE_IMPORTANCE));
     RenderOptions opt;
-    FlatScene flat = flatten_scene(s, opt);
-    set_camera(flat, s, 0, opt);
+    FlatScene flat = prepare_scene(s, opt);
+    prepare_camera(flat, s, 0, opt);
     SceneData sd = flat.view();
     const Light* light = &flat.lights[flat.header.environment];
     std::vector<double> f = environment_importance(s.environment_map, mapping);
@@ -353,8 +353,8 @@ TEST(EnvironmentLight, OpenClMatchesCpuBitForBit) {
       RenderOptions opt;
       opt.spp = 4;
       opt.seed = 5;
-      FlatScene flat = flatten_scene(s, opt);
-      set_camera(flat, s, 0, opt);
+      FlatScene flat = prepare_scene(s, opt);
+      prepare_camera(flat, s, 0, opt);
       RenderResult a = test::render_on(*cl, flat), b = test::render_cpu(flat, 2);
       ASSERT_EQ(a.accum.size(), b.accum.size());
       float brightest = 0;

@@ -85,8 +85,8 @@ TEST(HitPoint, RayModeReachesBothDevicesBitIdentically) {
   opt.camera_frame = false;
   auto render = [&](Dev d, bool ray_point) {
     opt.ray_hit_point = ray_point;
-    rt::FlatScene f = rt::flatten_scene(s, opt);
-    rt::set_camera(f, s, 0, opt);
+    rt::FlatScene f = rt::prepare_scene(s, opt);
+    rt::prepare_camera(f, s, 0, opt);
     std::string why;
     return rt::test::render_on(*rt::test::shared_device(d, &why), f);
   };

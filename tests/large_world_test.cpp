@@ -41,8 +41,8 @@ std::vector<Dev> Devices() {
 }
 
 rt::RenderResult Render(Dev d, const rt::SceneDesc& s, const rt::RenderOptions& o, int camera = 0) {
-  rt::FlatScene f = rt::flatten_scene(s, o);
-  rt::set_camera(f, s, camera, o);
+  rt::FlatScene f = rt::prepare_scene(s, o);
+  rt::prepare_camera(f, s, camera, o);
   std::string why;
   rt::RenderDevice* device = rt::test::shared_device(d, &why);
   return rt::test::render_on(*device, f);
@@ -252,9 +252,9 @@ TEST(LargeWorld, ObjectBeyondFloatRangeFromTheCameraIsRefused) {
   b.camera(V(-3e38, 0, 0), V(0, 0, 0), V(0, 1, 0), 1, 1, 1, 4, 4);
   const rt::SceneDesc s = b.scene();
   rt::RenderOptions o;
-  rt::FlatScene f = rt::flatten_scene(s, o);  // In the world's frame both fit.
+  rt::FlatScene f = rt::prepare_scene(s, o);  // In the world's frame both fit.
   try {
-    rt::set_camera(f, s, 0, o);
+    rt::prepare_camera(f, s, 0, o);
     ADD_FAILURE() << "the camera's frame was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("Sphere 0: lies beyond float range from the camera"),

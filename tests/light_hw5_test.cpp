@@ -118,8 +118,8 @@ rt::SceneDesc Floor() {
 
 float Render(const rt::SceneDesc& s) {
   rt::RenderOptions opt;
-  rt::FlatScene flat = rt::flatten_scene(s, opt);
-  rt::set_camera(flat, s, 0, opt);
+  rt::FlatScene flat = rt::prepare_scene(s, opt);
+  rt::prepare_camera(flat, s, 0, opt);
   rt::RenderResult r = rt::test::render_cpu(flat, 1);
   return r.accum[0].sum.x / r.accum[0].sum.w;
 }

@@ -1,5 +1,5 @@
 // Tests for light sampling (cl/light/): each type's sample against closed forms, the
-// dispatch on the type tag, and the tagged array flatten_scene builds from the loader's
+// dispatch on the type tag, and the tagged array prepare_camera builds from the loader's
 // point and area lights.
 //
 // Tolerances: a point light's sample is exact where the operands are dyadic; the area
@@ -161,7 +161,8 @@ TEST(LightArray, FlattenTagsPointLightsFirstAndNumbersTheSampledOnes) {
   p.position = {0, 0, 3};
   p.intensity = V(5, 5, 5);
   desc.point_lights = {p};
-  FlatScene f = flatten_scene(desc, RenderOptions());
+  FlatScene f = prepare_scene(desc, RenderOptions());
+  prepare_camera(f, desc, 0, RenderOptions());
   ASSERT_EQ(f.header.num_lights, 3);
   EXPECT_EQ(f.lights[0].type, RT_LIGHT_POINT);
   EXPECT_EQ(f.lights[0].emission.x, 5.0f);
@@ -169,8 +170,7 @@ TEST(LightArray, FlattenTagsPointLightsFirstAndNumbersTheSampledOnes) {
   EXPECT_EQ(f.lights[1].sample_index, 0);
   EXPECT_EQ(f.lights[2].sample_index, 1);
   EXPECT_EQ(f.lights[2].area, 1.0f);
-  EXPECT_EQ(scene_features(desc, 0, RenderOptions()) & (RT_LIGHT_POINT | RT_LIGHT_AREA),
-            RT_LIGHT_POINT | RT_LIGHT_AREA);
+  EXPECT_EQ(f.header.features & (RT_LIGHT_POINT | RT_LIGHT_AREA), RT_LIGHT_POINT | RT_LIGHT_AREA);
 }
 
 }  // namespace

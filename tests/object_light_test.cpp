@@ -61,8 +61,8 @@ Flat Load(const std::string& xml) {
   f.scene = load_scene_text(xml, "object_light_test.xml");
   RenderOptions opt;
   opt.camera_frame = false;  // The tests evaluate lights at world-space points.
-  f.flat = flatten_scene(f.scene, opt);
-  set_camera(f.flat, f.scene, 0, opt);
+  f.flat = prepare_scene(f.scene, opt);
+  prepare_camera(f.flat, f.scene, 0, opt);
   f.sd = f.flat.view();
   return f;
 }
@@ -287,8 +287,8 @@ TEST(ObjectLightDevices, KernelMatchesCpuBitForBit) {
     }
     RenderOptions opt;
     opt.spp = 4;
-    FlatScene flat = flatten_scene(scene, opt);
-    set_camera(flat, scene, 0, opt);
+    FlatScene flat = prepare_scene(scene, opt);
+    prepare_camera(flat, scene, 0, opt);
     flat.header.camera.width = flat.header.camera.height = 48;
     RenderResult a = test::render_on(*cl, flat), b = test::render_cpu(flat);
     ASSERT_EQ(a.accum.size(), b.accum.size());

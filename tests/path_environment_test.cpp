@@ -179,8 +179,8 @@ TEST(PathEnvironment, OpenClMatchesCpuBitForBit) {
     c.right = c.top = 0.6;
     rt::RenderOptions opt;
     opt.seed = 3;
-    rt::FlatScene flat = rt::flatten_scene(s, opt);
-    rt::set_camera(flat, s, 0, opt);
+    rt::FlatScene flat = rt::prepare_scene(s, opt);
+    rt::prepare_camera(flat, s, 0, opt);
     rt::RenderResult a = rt::test::render_on(*cl, flat), b = rt::test::render_cpu(flat);
     ASSERT_EQ(a.accum.size(), b.accum.size());
     size_t same = 0;

@@ -24,8 +24,8 @@ rt::FlatScene PathTraced(const std::string& rel, int flags, int spp, int size,
   scene->cameras[0].path_flags = flags;
   rt::RenderOptions opt;
   opt.spp = spp;
-  rt::FlatScene flat = rt::flatten_scene(*scene, opt);
-  rt::set_camera(flat, *scene, 0, opt);
+  rt::FlatScene flat = rt::prepare_scene(*scene, opt);
+  rt::prepare_camera(flat, *scene, 0, opt);
   flat.header.camera.width = size;
   flat.header.camera.height = size;
   return flat;

@@ -209,9 +209,13 @@ TEST(PathTracing, RendererElementsAreRead) {
       "ImportanceSampling\n RussianRoulette</RendererParams>");
   EXPECT_EQ(all.cameras[0].path_flags,
             RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | RT_FLAG_RUSSIAN_ROULETTE);
-  rt::RenderOptions opt;
-  EXPECT_TRUE(rt::scene_features(all, 0, opt) & RT_FEATURE_PATH_TRACING);
-  EXPECT_FALSE(rt::scene_features(plain, 0, opt) & RT_FEATURE_PATH_TRACING);
+  auto features = [](const rt::SceneDesc& s) {
+    rt::FlatScene flat = rt::prepare_scene(s, rt::RenderOptions());
+    rt::prepare_camera(flat, s, 0, rt::RenderOptions());
+    return flat.header.features;
+  };
+  EXPECT_TRUE(features(all) & RT_FEATURE_PATH_TRACING);
+  EXPECT_FALSE(features(plain) & RT_FEATURE_PATH_TRACING);
 }
 
 // One line naming the file, the element and the word.

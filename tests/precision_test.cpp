@@ -30,8 +30,8 @@ rt::FlatScene load(const Case& c, bool double_precision) {
   rt::RenderOptions opt;
   opt.spp = c.spp;
   opt.precision = double_precision ? rt::Precision::kDouble : rt::Precision::kFloat;
-  rt::FlatScene flat = rt::flatten_scene(scene, opt);
-  rt::set_camera(flat, scene, 0, opt);
+  rt::FlatScene flat = rt::prepare_scene(scene, opt);
+  rt::prepare_camera(flat, scene, 0, opt);
   flat.header.camera.width = c.size;
   flat.header.camera.height = c.size;
   return flat;
@@ -90,8 +90,10 @@ TEST_P(PrecisionDouble, KernelMatchesTheCpuReferenceBitForBit) {
   rt::RenderDevice* cl = rt::test::shared_device(rt::Device::kOpenCl, &why);
   if (!cl) GTEST_SKIP() << "no OpenCL device: " << why;
   rt::FlatScene flat = load(c, true);
-  rt::RenderResult gpu = rt::test::render_on(*cl, flat);
-  rt::RenderResult cpu = rt::test::render_cpu(flat);
+  rt::KernelConfig in_double;
+  in_double.double_precision = true;
+  rt::RenderResult gpu = rt::test::render_on(*cl, flat, {}, nullptr, in_double);
+  rt::RenderResult cpu = rt::test::render_cpu(flat, 0, {}, in_double);
   EXPECT_EQ(differing_pixels(gpu, cpu), 0u) << c.scene;
   // Not the float image: the double build really ran.
   rt::RenderResult in_float = rt::test::render_cpu(load(c, false));

@@ -96,8 +96,8 @@ rt::OptionTable<Args> make_table() {
 
 // Renders the blocks (block x block pixels) whose block coordinates are multiples of
 // `stride`, into a compact image of just those pixels.
-rt::Image8 render_subset(const rt::FlatScene& flat, int block, int stride, rt::Image8* ref_out,
-                         const rt::Image8& ref, const PixelEncoder& encoder) {
+rt::Image8 render_subset(const rt::FlatScene& flat, bool in_double, int block, int stride,
+                         rt::Image8* ref_out, const rt::Image8& ref, const PixelEncoder& encoder) {
   const Camera& cam = flat.header.camera;
   int bx = cam.width / block, by = cam.height / block;
   int nx = (bx + stride - 1) / stride, ny = (by + stride - 1) / stride;
@@ -108,7 +108,7 @@ rt::Image8 render_subset(const rt::FlatScene& flat, int block, int stride, rt::I
   *ref_out = out;
   SceneData sd = flat.view();
   const rt::CpuPixelFunction accumulate =
-      flat.double_precision ? rt::accumulate_pixel_double : rt::accumulate_pixel_float;
+      in_double ? rt::accumulate_pixel_double : rt::accumulate_pixel_float;
   std::vector<std::thread> pool;
   int threads = std::max(1u, std::thread::hardware_concurrency());
   for (int t = 0; t < threads; ++t)
@@ -155,8 +155,9 @@ int main(int argc, char** argv) {
     // The CPU reference computes in double, so --precision auto is double here.
     std::string notice;
     a.render.precision = rt::resolve_precision(a.render.precision, true, "cpu-reference", &notice);
-    rt::FlatScene flat = rt::flatten_scene(scene, a.render);
-    rt::set_camera(flat, scene, a.camera, a.render);
+    const bool in_double = rt::kernel_config(a.render).double_precision;
+    rt::FlatScene flat = rt::prepare_scene(scene, a.render);
+    rt::prepare_camera(flat, scene, a.camera, a.render);
     rt::Image8 ref = rt::read_png(files[1]);
     const Camera& cam = flat.header.camera;
     if (ref.width != cam.width || ref.height != cam.height) {
@@ -184,9 +185,9 @@ int main(int argc, char** argv) {
       encoder.scale = rt::PhotographicStatistics(rt::read_exr(exr), desc.tonemap_params);
     }
     rt::Image8 ref_subset;
-    rt::Image8 img = render_subset(flat, block, stride, &ref_subset, ref, encoder);
+    rt::Image8 img = render_subset(flat, in_double, block, stride, &ref_subset, ref, encoder);
     cmp::ReferenceResult r =
-        cmp::check_reference(img, ref_subset, a.criterion, flat.double_precision);
+        cmp::check_reference(img, ref_subset, a.criterion, in_double);
     char detail[160];
     std::snprintf(detail, sizeof detail, "%dx%d, %d spp, stride %d (%.1f %% of the pixels)",
                   cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride));

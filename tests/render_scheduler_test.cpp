@@ -139,8 +139,8 @@ class FakeDevice final : public rt::RenderDevice {
   explicit FakeDevice(int cancel_after, std::atomic<bool>* cancel)
       : cancel_after_(cancel_after), cancel_(cancel) {}
   std::string name() const override { return "fake"; }
-  void check_memory(const rt::FlatScene&, uint64_t) const override {}
-  rt::DeviceLoadInfo load(const rt::FlatScene& flat) override {
+  void check_memory(const rt::MemoryNeed&) const override {}
+  rt::DeviceLoadInfo load(const rt::FlatScene& flat, const rt::KernelConfig&) override {
     width_ = flat.header.camera.width;
     film_.assign(static_cast<size_t>(width_) * flat.header.camera.height, PixelAccum{});
     return {};
@@ -175,7 +175,7 @@ TEST(RenderScheduler, CancellationEndsSamplingAfterThePass) {
   std::atomic<bool> cancel{false};
   FakeDevice device(3, &cancel);
   rt::Progress quiet(false, "", 0);
-  rt::RenderResult r = rt::render_camera(device, flat, quiet, {}, &cancel);
+  rt::RenderResult r = rt::render_camera(device, flat, rt::KernelConfig(), quiet, {}, &cancel);
   EXPECT_TRUE(r.cancelled);
   EXPECT_GT(r.spp, 1);
   EXPECT_LT(r.spp, 1 << 20);
@@ -190,7 +190,7 @@ TEST(RenderScheduler, SampleRowsFillsOnlyTheTile) {
   flat.header.camera.samples = 7;
   std::atomic<bool> never{false};
   FakeDevice device(-1, &never);
-  device.load(flat);
+  device.load(flat, rt::KernelConfig());
   rt::Progress quiet(false, "", 0);
   EXPECT_EQ(rt::sample_rows(device, flat.header.camera, 4, 9, quiet), 7);
   std::vector<PixelAccum> film;

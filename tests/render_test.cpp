@@ -16,8 +16,8 @@ rt::RenderResult RenderExample(int threads, uint32_t seed) {
   rt::RenderOptions opt;
   opt.seed = seed;
   opt.spp = 4;
-  rt::FlatScene flat = rt::flatten_scene(scene, opt);
-  rt::set_camera(flat, scene, 0, opt);
+  rt::FlatScene flat = rt::prepare_scene(scene, opt);
+  rt::prepare_camera(flat, scene, 0, opt);
   return rt::test::render_cpu(flat, threads);
 }
 
@@ -53,8 +53,8 @@ rt::RenderResult RenderAreaWithStop(const rt::StopRule& stop, int spp) {
   scene.cameras[0].height = 36;
   rt::RenderOptions opt;
   opt.spp = spp;
-  rt::FlatScene flat = rt::flatten_scene(scene, opt);
-  rt::set_camera(flat, scene, 0, opt);
+  rt::FlatScene flat = rt::prepare_scene(scene, opt);
+  rt::prepare_camera(flat, scene, 0, opt);
   return rt::test::render_cpu(flat, 2, stop);
 }
 

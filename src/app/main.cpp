@@ -20,17 +20,19 @@
 namespace {
 
 void print_stats(const std::string& out, const rt::RenderDevice& device, const rt::JobScene& s,
-                 const rt::FlatScene& flat, const rt::DeviceLoadInfo& load,
+                 const rt::PreparedScene& prepared, const rt::DeviceLoadInfo& load,
                  const rt::RenderResult& r) {
+  const rt::FlatScene& flat = prepared.flat;
   std::fprintf(
       stderr,
       "stats: %s: device %s | load %.1f ms | bvh %.1f ms (%zu %d-wide nodes, %zu triangles, "
-      "%zu instances, depth top %d / mesh %d) | camera frame %.2f ms | kernel compile "
+      "%zu instances, depth top %d / mesh %d) | camera frame %.2f ms (top levels built %d) | "
+      "kernel compile "
       "%.1f ms%s | upload %.1f ms (%.0f MiB shared) | render "
       "%.3f s | %d spp | %.3f Msamples/s | %.3f Mrays/s | features 0x%x\n",
       out.c_str(), device.name().c_str(), s.load_ms, flat.stats.bvh_build_ms, flat.stats.nodes,
-      flat.bvh_width, flat.stats.triangles, flat.stats.instances, flat.stats.tlas_depth,
-      flat.stats.max_blas_depth, flat.stats.place_ms, load.compile_ms,
+      prepared.kernel.bvh_width, flat.stats.triangles, flat.stats.instances, flat.stats.tlas_depth,
+      flat.stats.max_blas_depth, flat.stats.place_ms, flat.stats.top_levels_built, load.compile_ms,
       load.cache_hit ? " (cache hit)" : "", load.upload_ms, load.shared_bytes / 1048576.0,
       r.seconds, r.spp, r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
       static_cast<unsigned>(flat.header.features));
@@ -49,44 +51,42 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
     device = rt::create_device(rt::device_options(opt, 0, opt.threads), &notice);
     if (!notice.empty() && !opt.quiet) std::fprintf(stderr, "notice: %s\n", notice.c_str());
   }
-  rt::RenderOptions render = opt.render;
   std::string notice;
-  render.precision =
-      rt::resolve_precision(render.precision, device->has_double(), device->name(), &notice);
+  rt::PreparedScene prepared = rt::prepare_for_device(s.desc, opt.render, *device, &notice);
   if (new_device && !notice.empty() && !opt.quiet)
     std::fprintf(stderr, "notice: %s\n", notice.c_str());
-  render.bvh.width = rt::resolve_bvh_width(render.bvh.width, *device);
-  rt::FlatScene flat = rt::flatten_scene(s.desc, render);
-  // Every image's memory is checked before the first render starts.
+  const rt::FlatScene& flat = prepared.flat;
+  // Every image's memory is checked before the first render starts, each camera's arrays
+  // estimated from the scene's (they are placed only to be rendered).
   for (int c : cameras) {
+    const rt::CameraDesc& cam = s.desc.cameras[c];
     try {
-      rt::set_camera(flat, s.desc, c, opt.render);  // Also checks the camera's frame.
+      device->check_memory(rt::camera_memory_need(
+          prepared, s.desc, c,
+          rt::output_bytes(static_cast<uint64_t>(cam.width) * cam.height, opt.moments)));
+    } catch (const std::exception& e) {
+      throw std::runtime_error(cam.image_name + ": " + e.what());
+    }
+  }
+  for (size_t k = 0; k < cameras.size(); ++k) {
+    const int c = cameras[k];
+    try {
+      rt::prepare_camera(prepared, s.desc, c);  // Also checks the camera's frame.
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error(s.path + ": Cameras > Camera " + std::to_string(c) + ": " +
                                e.what());
     }
     const Camera& fc = flat.header.camera;
-    try {
-      device->check_memory(
-          flat, rt::output_bytes(static_cast<uint64_t>(fc.width) * fc.height, opt.moments));
-    } catch (const std::exception& e) {
-      throw std::runtime_error(s.desc.cameras[c].image_name + ": " + e.what());
-    }
-  }
-  for (size_t k = 0; k < cameras.size(); ++k) {
-    const int c = cameras[k];
-    rt::set_camera(flat, s.desc, c, opt.render);
-    const Camera& fc = flat.header.camera;
     rt::Progress progress(rt::Progress::wanted(opt.quiet), s.desc.cameras[c].image_name,
                           static_cast<uint64_t>(fc.width) * fc.height * fc.samples);
     rt::DeviceLoadInfo load;
-    rt::RenderResult r = rt::render_camera(*device, flat, progress,
+    rt::RenderResult r = rt::render_camera(*device, flat, prepared.kernel, progress,
                                            rt::camera_stop_rule(opt.render.stop, s.desc.cameras[c]),
                                            &rt::stop_requested(), &load);
     progress.finish();
     const std::string out = rt::image_path(opt, s, c);
     rt::write_outputs(opt, s.path, c, s.desc.cameras[c], device->name(), r, out);
-    if (opt.stats) print_stats(out, *device, s, flat, load, r);
+    if (opt.stats) print_stats(out, *device, s, prepared, load, r);
     if (rt::stop_requested().load()) {
       std::fprintf(
           stderr, "raytracer: interrupted: %s written with %d of %d samples per pixel%s\n",

@@ -29,6 +29,11 @@ struct BvhOptions {
   int width = 0;
 };
 
+// The children per wide node `options` build: its width, or RT_BVH_WIDTH for 0.
+inline int node_width(const BvhOptions& options) {
+  return options.width != 0 ? options.width : RT_BVH_WIDTH;
+}
+
 // A binary node: leaf when count > 0 (primitives first..first+count-1), otherwise an
 // interior node whose children are first and first+1, split along axis -count.
 struct BinaryBvhNode {

@@ -37,30 +37,31 @@ void append_blocks(const PageAlignedVector<Triangle>& triangles, int first, int 
 
 }  // namespace
 
-void build_triangle_blocks(FlatScene& f) {
-  const int width = f.bvh_width;
-  WideNodes nodes(f.nodes, width);
-  const size_t blas_nodes = f.blas_nodes / wide_units(width);
+void build_triangle_blocks(PageAlignedVector<BvhNode>& all_nodes, size_t blas_nodes, int width,
+                           const PageAlignedVector<Triangle>& triangles,
+                           PageAlignedVector<TriangleBlock>& blocks) {
+  WideNodes nodes(all_nodes, width);
+  const size_t blas_wide_nodes = blas_nodes / wide_units(width);
   // Counted first, so the array is allocated once at its final size.
   size_t total = 0;
-  for (size_t n = 0; n < blas_nodes; ++n)
+  for (size_t n = 0; n < blas_wide_nodes; ++n)
     for (int lane = 0; lane < width; ++lane) {
       int child = nodes.child(n, lane);
       if (is_leaf(child)) total += blocks_of(RtLeafCount(child), width);
     }
-  f.triangle_blocks.clear();
-  f.triangle_blocks.reserve(total * wide_units(width));
+  blocks.clear();
+  blocks.reserve(total * wide_units(width));
   // Blocks follow the nodes' order (each mesh's nodes are depth first), so a subtree's
   // triangles lie close together in memory.
-  for (size_t n = 0; n < blas_nodes; ++n)
+  for (size_t n = 0; n < blas_wide_nodes; ++n)
     for (int lane = 0; lane < width; ++lane) {
       int child = nodes.child(n, lane);
       if (!is_leaf(child)) continue;
-      size_t first_block = f.triangle_blocks.size() / wide_units(width);
+      size_t first_block = blocks.size() / wide_units(width);
       if (first_block > static_cast<size_t>(RT_BVH_MAX_PRIMITIVES))
         throw std::length_error("BVH: " + std::to_string(total) +
                                 " triangle blocks exceed the node format's limits");
-      append_blocks(f.triangles, RtLeafFirst(child), RtLeafCount(child), width, f.triangle_blocks);
+      append_blocks(triangles, RtLeafFirst(child), RtLeafCount(child), width, blocks);
       nodes.set_child(n, lane, RtLeafRef(static_cast<int>(first_block), RtLeafCount(child)));
     }
 }

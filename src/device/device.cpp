@@ -39,12 +39,48 @@ int resolve_bvh_width(int asked, const RenderDevice& device) {
   return asked;
 }
 
-void check_memory_limit(const FlatScene& flat, uint64_t bytes, uint64_t limit,
+KernelConfig kernel_config(const RenderOptions& options) {
+  if (options.precision == Precision::kAuto)
+    throw std::logic_error("--precision auto reached the kernel unresolved (resolve_precision)");
+  KernelConfig k;
+  k.fast_math = options.fast_math;
+  k.double_precision = options.precision == Precision::kDouble;
+  k.bvh_width = node_width(options.bvh);
+  return k;
+}
+
+PreparedScene prepare_for_device(const SceneDesc& scene, const RenderOptions& options,
+                                 const RenderDevice& device, std::string* notice) {
+  PreparedScene p;
+  p.options = options;
+  p.options.precision =
+      resolve_precision(options.precision, device.has_double(), device.name(), notice);
+  p.options.bvh.width = resolve_bvh_width(options.bvh.width, device);
+  p.kernel = kernel_config(p.options);
+  p.flat = prepare_scene(scene, p.options);
+  return p;
+}
+
+void prepare_camera(PreparedScene& prepared, const SceneDesc& scene, int camera) {
+  prepare_camera(prepared.flat, scene, camera, prepared.options);
+}
+
+MemoryNeed camera_memory_need(const PreparedScene& prepared, const SceneDesc& scene, int camera,
+                              uint64_t host_bytes) {
+  MemoryNeed need;
+  need.arrays = camera_array_counts(prepared.flat, scene, prepared.options);
+  need.width = scene.cameras[camera].width;
+  need.height = scene.cameras[camera].height;
+  need.host_bytes = host_bytes;
+  return need;
+}
+
+void check_memory_limit(const MemoryNeed& need, uint64_t bytes, uint64_t limit,
                         const std::string& what, const std::string& limit_text) {
   if (bytes <= limit) return;
-  throw std::runtime_error(std::to_string(flat.header.camera.width) + "x" +
-                           std::to_string(flat.header.camera.height) + " pixels need " +
-                           format_bytes(bytes) + " of " + what + ", more than " + limit_text);
+  throw std::runtime_error(std::to_string(need.width) + "x" + std::to_string(need.height) +
+                           " pixels need " + format_bytes(bytes) + " of " + what + ", more than " +
+                           limit_text);
 }
 
 uint64_t available_host_memory() {

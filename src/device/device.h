@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cl/film/film_types.h"
+#include "device/kernel_config.h"
 #include "prepare/flat_scene.h"
 
 namespace rt {
@@ -38,6 +39,14 @@ struct RenderWork {
   int samples() const { return sample_end - sample_begin; }
 };
 
+// What rendering one camera needs, for the memory check: the scene's arrays, the film's
+// resolution, and the caller's own host bytes (its copies and outputs).
+struct MemoryNeed {
+  ArrayCounts arrays;
+  int width = 0, height = 0;
+  uint64_t host_bytes = 0;
+};
+
 // What loading a scene cost, for --stats.
 struct DeviceLoadInfo {
   double compile_ms = 0;      // Building the program (or loading it from a cache); 0 on the CPU.
@@ -59,14 +68,14 @@ class RenderDevice {
   // only, which the CPU reference is compiled for.
   virtual int bvh_width() const { return RT_BVH_WIDTH; }
   virtual bool supports_bvh_width(int width) const { return width == RT_BVH_WIDTH; }
-  // Checks, before anything is allocated, that rendering `flat`'s camera fits: the device's
-  // buffers (scene arrays and film) in its memory, and `host_bytes` more (the caller's
-  // copies and outputs) in the host's. Throws std::runtime_error, one line naming the
-  // resolution, the bytes needed and the limit.
-  virtual void check_memory(const FlatScene& flat, uint64_t host_bytes) const = 0;
-  // Makes `flat` (with its camera) the scene of the following render() calls and clears the
-  // film. `flat` must outlive them. Throws std::runtime_error (one line) on failure.
-  virtual DeviceLoadInfo load(const FlatScene& flat) = 0;
+  // Checks, before anything is allocated, that `need` fits: the device's buffers (scene
+  // arrays and film) in its memory, and need.host_bytes more in the host's. Throws
+  // std::runtime_error, one line naming the resolution, the bytes needed and the limit.
+  virtual void check_memory(const MemoryNeed& need) const = 0;
+  // Makes `flat` (with its camera) the scene of the following render() calls, with the kernel
+  // `kernel` configures, and clears the film. `flat` must outlive them. Throws
+  // std::runtime_error (one line) on failure.
+  virtual DeviceLoadInfo load(const FlatScene& flat, const KernelConfig& kernel) = 0;
   // Adds samples [s0, s1) of rows [r0, r1) to the film; blocks until done. Each pixel's
   // samples must be added in order (s0 == the samples it holds), which keeps every device
   // bit-identical to the others. Returns the rays cast, or 0 when the device does not count
@@ -84,12 +93,35 @@ class RenderDevice {
 // for 0, else `asked` when it can render that, else std::runtime_error naming both.
 int resolve_bvh_width(int asked, const RenderDevice& device);
 
+// A scene prepared for one device: the options resolved against it once, the kernel
+// configuration they give, and the flat scene both steps of the preparation
+// (prepare/flat_scene.h) build with them.
+struct PreparedScene {
+  RenderOptions options;  // Precision and BVH width resolved for the device.
+  KernelConfig kernel;
+  FlatScene flat;
+};
+
+// Every driver's preparation: resolves --precision (*notice: resolve_precision's) and the
+// BVH width (resolve_bvh_width) for `device`, then runs prepare_scene.
+PreparedScene prepare_for_device(const SceneDesc& scene, const RenderOptions& options,
+                                 const RenderDevice& device, std::string* notice);
+// prepare_camera with the options prepare_for_device resolved.
+void prepare_camera(PreparedScene& prepared, const SceneDesc& scene, int camera);
+// The kernel configuration of resolved `options`; throws std::logic_error for an unresolved
+// --precision auto.
+KernelConfig kernel_config(const RenderOptions& options);
+// The memory check of camera `camera` of `scene`, before it is placed: the arrays as any
+// camera makes them at most (camera_array_counts), and its resolution.
+MemoryNeed camera_memory_need(const PreparedScene& prepared, const SceneDesc& scene, int camera,
+                              uint64_t host_bytes);
+
 // Bytes of one pixel's film (accumulator and first-hit facts), on any device.
 constexpr uint64_t kFilmBytesPerPixel = sizeof(PixelAccum) + sizeof(PrimaryInfo);
 
 // Throws the memory error of check_memory when `bytes` exceed `limit`: "<W>x<H> pixels need
 // <bytes> of <what>, more than <limit_text>".
-void check_memory_limit(const FlatScene& flat, uint64_t bytes, uint64_t limit,
+void check_memory_limit(const MemoryNeed& need, uint64_t bytes, uint64_t limit,
                         const std::string& what, const std::string& limit_text);
 
 // The host memory a render may use: the kernel's estimate of available memory

@@ -17,31 +17,28 @@ TileResult TileWorker::render(const TileTask& task) {
   if (task.scene != scene_index_) {
     scene_index_ = -1;
     scene_ = load_job_scene(opt_.scenes.at(task.scene), opt_, false);
-    RenderOptions render = opt_.render;
     std::string notice;  // Rank 0 prints the notice of its own device.
-    render.precision =
-        resolve_precision(render.precision, device_->has_double(), device_->name(), &notice);
-    render.bvh.width = resolve_bvh_width(render.bvh.width, *device_);
-    flat_ = flatten_scene(scene_.desc, render);
+    prepared_ = prepare_for_device(scene_.desc, opt_.render, *device_, &notice);
     scene_index_ = task.scene;
     camera_ = -1;
   }
   const std::string& name = scene_.desc.cameras.at(task.camera).image_name;
   if (task.camera != camera_) {
     camera_ = -1;
-    set_camera(flat_, scene_.desc, task.camera, opt_.render);
-    const Camera& fc = flat_.header.camera;
+    const CameraDesc& c = scene_.desc.cameras[task.camera];
     try {
       // Rank 0 holds the whole image's outputs; this rank the film and one band's copy.
-      device_->check_memory(flat_,
-                            2 * static_cast<uint64_t>(fc.width) * fc.height * kFilmBytesPerPixel);
+      device_->check_memory(
+          camera_memory_need(prepared_, scene_.desc, task.camera,
+                             2 * static_cast<uint64_t>(c.width) * c.height * kFilmBytesPerPixel));
     } catch (const std::exception& e) {
       throw std::runtime_error(name + ": " + e.what());
     }
-    device_->load(flat_);
+    prepare_camera(prepared_, scene_.desc, task.camera);
+    device_->load(prepared_.flat, prepared_.kernel);
     camera_ = task.camera;
   }
-  const Camera& cam = flat_.header.camera;
+  const Camera& cam = prepared_.flat.header.camera;
   const int align = device_->row_alignment();
   if (task.row_begin % align != 0)
     throw std::runtime_error(name + ": a tile starting at row " + std::to_string(task.row_begin) +

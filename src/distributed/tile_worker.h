@@ -7,10 +7,9 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "app/render_job.h"
 #include "device/device.h"
 #include "distributed/job_plan.h"
-#include "prepare/flat_scene.h"
-#include "app/render_job.h"
 
 namespace rt {
 
@@ -29,7 +28,7 @@ class TileWorker {
   // threads); throws one line when it cannot.
   TileWorker(const CliOptions& opt, int gpu_rank, int threads);
   std::string device_name() const { return device_->name(); }
-  // Renders `task`; the scene file is loaded and flattened when it changes, and the device
+  // Renders `task`; the scene file is loaded and prepared when it changes, and the device
   // reloaded when the camera changes (tiles of one image share the film). Throws one line.
   TileResult render(const TileTask& task);
 
@@ -38,7 +37,7 @@ class TileWorker {
   std::unique_ptr<RenderDevice> device_;
   int scene_index_ = -1, camera_ = -1;
   JobScene scene_;
-  FlatScene flat_;
+  PreparedScene prepared_;
   std::vector<PixelAccum> accum_;
   std::vector<PrimaryInfo> primary_;
 };

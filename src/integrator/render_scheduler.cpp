@@ -109,11 +109,11 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
   return scheduler.samples_done();
 }
 
-RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress& progress,
-                           const StopRule& stop, const std::atomic<bool>* cancel,
-                           DeviceLoadInfo* load_info) {
+RenderResult render_camera(RenderDevice& device, const FlatScene& flat, const KernelConfig& kernel,
+                           Progress& progress, const StopRule& stop,
+                           const std::atomic<bool>* cancel, DeviceLoadInfo* load_info) {
   const Camera& cam = flat.header.camera;
-  DeviceLoadInfo info = device.load(flat);
+  DeviceLoadInfo info = device.load(flat, kernel);
   if (load_info) *load_info = info;
   RenderResult r;
   r.width = cam.width;

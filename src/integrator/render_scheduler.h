@@ -14,8 +14,8 @@
 // the time limit, or when the estimated relative noise is below the target. A pass
 // after which the samples left would make a last pass no larger than it takes them too (at
 // most twice its planned samples, its bands then half as tall): the fourfold growth only
-// guards the estimate, and each pass costs every pixel its setup again (tap_0200 at 9
-// samples: 1 + 8 instead of 1 + 4 + 4, ~8 % less CPU per sample). Under a stop rule the
+// guards the estimate, and each pass costs every pixel its setup again (at 9 samples:
+// passes of 1 + 8 instead of 1 + 4 + 4, one setup fewer). Under a stop rule the
 // passes stay fourfold, as the points where it is checked.
 #pragma once
 
@@ -58,12 +58,13 @@ class RenderScheduler {
   std::vector<double> row_cost_;  // Seconds per sample of each row, as last measured.
 };
 
-// Renders the camera of `flat` on `device` under the policy above. `cancel`, when set,
+// Renders the camera of `flat` on `device`, with the kernel `kernel` configures, under the
+// policy above. `cancel`, when set,
 // stops sampling at the end of the current pass (RenderResult::cancelled). *load_info
 // receives what loading the scene cost. Throws std::runtime_error (one line) on a device
 // failure.
-RenderResult render_camera(RenderDevice& device, const FlatScene& flat, Progress& progress,
-                           const StopRule& stop = StopRule(),
+RenderResult render_camera(RenderDevice& device, const FlatScene& flat, const KernelConfig& kernel,
+                           Progress& progress, const StopRule& stop = StopRule(),
                            const std::atomic<bool>* cancel = nullptr,
                            DeviceLoadInfo* load_info = nullptr);
 

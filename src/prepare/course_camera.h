@@ -12,10 +12,9 @@ void set_course_camera(Camera& cam, const CameraDesc& c);
 
 // Whether the course's float camera rays are faithful for camera c, whose course fields
 // set_course_camera has filled in cam: float's spacing at the film point's coordinates stays
-// under a twentieth of a pixel on the film (a course camera 30-370 units from the origin
-// rounds by 0.1-1.5 % of a pixel). Far from the origin the rounding would displace whole
-// pixels, so such a camera keeps the camera-relative rays whatever --camera-rays says
-// (README, "Figures").
+// under a twentieth of a pixel on the film, as it does for the course's cameras, a few
+// hundred units from the origin at most. Far from the origin the rounding would displace
+// whole pixels, so such a camera keeps the camera-relative rays whatever --camera-rays says.
 bool course_camera_is_faithful(const Camera& cam, const CameraDesc& c);
 
 }  // namespace rt

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cl/light/environment_map.h"
-#include "flat_scene.h"
+#include "prepare_stages.h"
 
 namespace rt {
 

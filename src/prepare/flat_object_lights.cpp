@@ -1,11 +1,12 @@
-// Object lights (LightMesh, LightSphere) in the device's tagged light array: each emitting
-// object becomes a Light naming its instance, after every light of the Lights block, and
+// Object lights (LightMesh, LightSphere) in the device's tagged light array, and the one
+// numbering of the lights that draw random numbers. Each emitting object becomes a Light
+// naming its instance, after every light of the Lights block, and
 // the instance names its light back (instance_lights) so a ray that hits it finds its
 // radiance. A mesh light also gets the cumulative world-space areas of its triangles, in
 // the order they lie in the triangle array, for sampling by area (cl/light/mesh_light.h).
 #include <cmath>
 
-#include "flat_scene.h"
+#include "prepare_stages.h"
 
 namespace rt {
 namespace {
@@ -38,29 +39,24 @@ double append_area_cdf(const Triangle* tris, int count, const Mat4& transform,
 
 }  // namespace
 
-void flatten_object_lights(const SceneDesc& scene, const std::vector<int>& instance_of_object,
-                           const std::vector<int>& mesh_first, FlatScene& flat) {
+void append_object_lights(const SceneDesc& scene, const std::vector<int>& instance_of_object,
+                          FlatScene& flat) {
   // Every instance has an entry (-1 for most), so a kernel compiled with every feature
   // reads valid data in scenes without object lights too.
   flat.instance_lights.assign(flat.instances.size(), -1);
-  // Object lights continue the numbering of the lights that draw random numbers.
-  int sampled = 0;
-  for (const Light& l : flat.lights)
-    if (l.type != RT_LIGHT_POINT && l.type != RT_LIGHT_DIRECTIONAL && l.type != RT_LIGHT_SPOT)
-      ++sampled;
+  flat.light_cdf.clear();
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const ObjectDesc& o = scene.objects[i];
     if (!o.emits || instance_of_object[i] < 0) continue;
     Light l{};
     l.index = instance_of_object[i];
     l.emission = to_float3(o.radiance);
-    l.sample_index = sampled++;
     if (o.kind == ObjectDesc::kSphere) {
       l.type = RT_LIGHT_SPHERE;
       l.param0 = static_cast<float>(std::fabs(determinant3(o.transform)));
     } else {
       l.type = RT_LIGHT_MESH;
-      l.first = mesh_first[o.mesh];
+      l.first = flat.meshes[o.mesh].first_triangle;
       l.count = static_cast<int>(scene.meshes[o.mesh].triangles.size());
       l.cdf = static_cast<int>(flat.light_cdf.size());
       l.area = static_cast<float>(
@@ -69,6 +65,13 @@ void flatten_object_lights(const SceneDesc& scene, const std::vector<int>& insta
     flat.instance_lights[l.index] = static_cast<int>(flat.lights.size());
     flat.lights.push_back(l);
   }
+}
+
+void number_lights(PageAlignedVector<Light>& lights) {
+  int sampled = 0;
+  for (Light& l : lights)
+    if (l.type != RT_LIGHT_POINT && l.type != RT_LIGHT_DIRECTIONAL && l.type != RT_LIGHT_SPOT)
+      l.sample_index = sampled++;
 }
 
 }  // namespace rt

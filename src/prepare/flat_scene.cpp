@@ -1,19 +1,14 @@
 #include "flat_scene.h"
 
-#include "course_camera.h"
-
 #include <chrono>
-#include <cmath>
 #include <exception>
 #include <stdexcept>
 #include <thread>
 
 #include "bvh/bvh_wide.h"
-#include "cl/features.h"
-#include "cl/material/brdf.h"
 #include "bvh/triangle_blocks.h"
+#include "prepare_stages.h"
 #include "util/parallel_for.h"
-#include "world_frame.h"
 
 namespace rt {
 
@@ -29,8 +24,6 @@ static_assert(sizeof(InstanceTextures) == 16, "InstanceTextures layout");
 static_assert(sizeof(TriangleUV) == 32, "TriangleUV layout");
 
 namespace {
-
-bool is_zero(Vec3d v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
 // The boxes of a mesh's triangles in its frame (vertices relative to `origin`, subtracted
 // in double and rounded to float, as they are stored), for the BVH build.
@@ -76,11 +69,11 @@ SceneData FlatScene::view() const {
   return sd;
 }
 
-FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
+FlatScene prepare_scene(const SceneDesc& scene, const RenderOptions& options) {
   auto start = std::chrono::steady_clock::now();
   FlatScene f;
-  f.bvh_width = options.bvh.width != 0 ? options.bvh.width : RT_BVH_WIDTH;
-  if (!valid_bvh_width(f.bvh_width))
+  const int width = node_width(options.bvh);
+  if (!valid_bvh_width(width))
     throw std::invalid_argument("--bvh-width " + std::to_string(options.bvh.width) +
                                 ": this build makes nodes of 4 or 8 children, a multiple of " +
                                 std::to_string(RT_BVH_WIDTH));
@@ -95,7 +88,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
   // Per-triangle normals and texture coordinates are stored only where something reads
   // them: normals for smooth meshes (cl/geometry/surface.h), coordinates for textured objects
   // (cl/texture/texturing.h). A scene of flat, untextured meshes keeps both arrays at their
-  // one padding element (at 4 M triangles, 320 MB of the 558 MB the arrays held).
+  // one padding element (together the two take more bytes per triangle than the triangle).
   bool any_smooth = false, any_textured = false;
   for (const MeshDesc& mesh : scene.meshes) any_smooth = any_smooth || mesh.smooth;
   for (const ObjectDesc& o : scene.objects) any_textured = any_textured || !o.textures.empty();
@@ -115,7 +108,7 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     BvhBuildResult r = build_bvh(prims, options.bvh, options.bvh.max_leaf, offset, binary);
     // Room for the wide nodes, at most one per interior binary node (and the root), so that
     // the collapse does not copy the array as it grows; the pages past its end stay untouched.
-    WideNodes nodes(f.nodes, f.bvh_width);
+    WideNodes nodes(f.nodes, width);
     const size_t most_nodes = nodes.size() + binary.size() / 2 + 1;
     if (nodes.capacity() < most_nodes) nodes.reserve(std::max(most_nodes, 2 * nodes.size()));
     fm.box.grow(binary[r.root].lo[0], binary[r.root].lo[1], binary[r.root].lo[2]);
@@ -184,41 +177,10 @@ FlatScene flatten_scene(const SceneDesc& scene, const RenderOptions& options) {
     f.stats.max_blas_depth = std::max(f.stats.max_blas_depth, w.depth);
   }
   f.blas_nodes = f.nodes.size();
-  build_triangle_blocks(f);
+  build_triangle_blocks(f.nodes, f.blas_nodes, width, f.triangles, f.triangle_blocks);
   flatten_textures(scene, f);
   flatten_environment(scene, f);
   f.stats.triangles = f.triangles.size();
-  // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
-#define RT_PAD_ARRAY(Type, name) \
-  if (f.name.empty()) f.name.emplace_back();
-  RT_DATA_ARRAYS(RT_PAD_ARRAY)
-#undef RT_PAD_ARRAY
-  f.triangle_blocks.resize(std::max(f.triangle_blocks.size(), wide_units(f.bvh_width)));
-  // The top level and the lights, in the world's frame until a camera is set.
-  place_world(f, scene, Vec3d{}, options);
-  SceneHeader& h = f.header;
-  h.background = to_float3(scene.background);
-  h.ambient_light = to_float3(scene.ambient);
-  h.shadow_epsilon = options.use_scene_epsilon ? static_cast<float>(scene.shadow_epsilon) : 0.0f;
-  h.intersection_epsilon = static_cast<float>(scene.intersection_epsilon);
-  h.max_depth = scene.max_depth;
-  h.background_texture = scene.background_texture;
-  h.seed = options.seed;
-  h.filter = options.filter;
-  h.filter_sigma = options.filter_sigma;
-  h.flags = (options.cull_back_faces ? RT_FLAG_CULL_BACK_FACES : 0) |
-            (options.background_on_secondary_miss ? RT_FLAG_BACKGROUND_ON_SECONDARY_MISS : 0) |
-            (options.fresnel_choice ? RT_FLAG_FRESNEL_CHOICE : 0) |
-            (options.unbiased_roulette ? RT_FLAG_UNBIASED_ROULETTE : 0) |
-            (options.exact_ellipsoid_lights ? RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
-            (options.facing_reflection ? RT_FLAG_FACING_REFLECTION : 0) |
-            (options.robust_offset ? RT_FLAG_ROBUST_OFFSET : 0) |
-            (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0) |
-            (options.ray_hit_point ? RT_FLAG_RAY_HIT_POINT : 0);
-  f.fast_math = options.fast_math;
-  if (options.precision == Precision::kAuto)
-    throw std::logic_error("--precision auto reached flatten_scene unresolved (resolve_precision)");
-  f.double_precision = options.precision == Precision::kDouble;
   f.stats.bvh_build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return f;
@@ -228,81 +190,6 @@ StopRule camera_stop_rule(const StopRule& options, const CameraDesc& camera) {
   StopRule rule = options;
   rule.tonemap_key = camera.tonemap ? camera.tonemap_params.key : 0.0;
   return rule;
-}
-
-void set_camera(FlatScene& flat, const SceneDesc& scene, int camera, const RenderOptions& options) {
-  const CameraDesc& c = scene.cameras[camera];
-  const auto start = std::chrono::steady_clock::now();
-  const Vec3d origin = options.camera_frame ? c.position : Vec3d{};
-  place_world(flat, scene, origin, options);
-  flat.stats.place_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  Camera& cam = flat.header.camera;
-  Vec3d w = normalize(c.gaze) * -1.0;
-  Vec3d u = normalize(cross(c.up, w));
-  Vec3d v = cross(w, u);
-  // A left-handed camera (the two public CENG795 renderers that read the attribute agree)
-  // keeps v and w and reverses u: the same rays, mirrored left to right on the film.
-  if (c.left_handed) u = u * -1.0;
-  cam.position = to_float3(c.position - origin);  // The frame's origin by default.
-  cam.u = to_float3(u);
-  cam.v = to_float3(v);
-  cam.w = to_float3(w);
-  set_course_camera(cam, c);
-  cam.left = static_cast<float>(c.left);
-  cam.right = static_cast<float>(c.right);
-  cam.bottom = static_cast<float>(c.bottom);
-  cam.top = static_cast<float>(c.top);
-  cam.near_distance = static_cast<float>(c.near_distance);
-  cam.aperture = static_cast<float>(c.aperture);
-  cam.focus_distance = static_cast<float>(c.focus_distance);
-  cam.lens = options.lens;
-  cam.width = c.width;
-  cam.height = c.height;
-  cam.samples = options.spp > 0 ? options.spp : c.samples;
-  int root = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cam.samples))));
-  cam.strata = root * root == cam.samples ? root : 0;
-  const bool course_camera = !options.exact_camera_rays && course_camera_is_faithful(cam, c);
-  flat.header.flags = (flat.header.flags & ~(RT_FLAG_PATH_MASK | RT_FLAG_COURSE_CAMERA)) |
-                      (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0) |
-                      (course_camera ? RT_FLAG_COURSE_CAMERA : 0);
-  flat.header.features = scene_features(scene, camera, options);
-}
-
-int scene_features(const SceneDesc& scene, int camera, const RenderOptions& options) {
-  int f = 0;
-  std::vector<bool> used(scene.materials.size());
-  const Vec3d eye = options.camera_frame ? scene.cameras[camera].position : Vec3d{};
-  for (const ObjectDesc& o : scene.objects) {
-    const bool sphere = o.kind == ObjectDesc::kSphere;
-    f |= sphere ? RT_FEATURE_SPHERES : RT_FEATURE_TRIANGLES;
-    // In the camera's frame (src/prepare/world_frame.h).
-    const Vec3d mesh_origin = sphere ? Vec3d{} : mesh_frame_origin(scene.meshes[o.mesh]);
-    const Mat4 to_frame = object_to_frame(o, mesh_origin, eye);
-    if (!to_frame.is_identity()) f |= RT_FEATURE_TRANSFORMS;
-    if (!sphere && keeps_world_direction(to_frame)) f |= RT_FEATURE_WORLD_MESHES;
-    if (o.kind == ObjectDesc::kMesh && scene.meshes[o.mesh].smooth) f |= RT_FEATURE_SMOOTH;
-    if (!is_zero(o.motion)) f |= RT_FEATURE_MOTION_BLUR;
-    used[o.material] = true;
-  }
-  for (size_t i = 0; i < used.size(); ++i) {
-    if (!used[i]) continue;
-    const Material& m = scene.materials[i];
-    f |= m.type;  // Type tags are feature bits (cl/features.h).
-    if (m.type != RT_MATERIAL_PLAIN && m.roughness > 0) f |= RT_FEATURE_ROUGHNESS;
-    if (m.brdf != RT_BRDF_ORIGINAL_BLINN_PHONG) f |= RT_FEATURE_BRDF;
-  }
-  for (const Light& l : tagged_lights(scene, Vec3d{})) f |= l.type;
-  for (const ObjectDesc& o : scene.objects)
-    if (o.emits) f |= o.kind == ObjectDesc::kSphere ? RT_LIGHT_SPHERE : RT_LIGHT_MESH;
-  bool textured = scene.background_texture >= 0;
-  for (const ObjectDesc& o : scene.objects) textured = textured || !o.textures.empty();
-  if (textured) f |= RT_FEATURE_TEXTURES;
-  const CameraDesc& c = scene.cameras[camera];
-  if (c.aperture > 0) f |= RT_FEATURE_DEPTH_OF_FIELD;
-  if ((options.spp > 0 ? options.spp : c.samples) > 1) f |= RT_FEATURE_MULTISAMPLE;
-  if (c.path_tracing) f |= RT_FEATURE_PATH_TRACING;
-  return f;
 }
 
 }  // namespace rt

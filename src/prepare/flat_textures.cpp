@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "flat_scene.h"
+#include "prepare_stages.h"
 
 namespace rt {
 

@@ -6,8 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "bvh/bvh_wide.h"
-
 namespace rt {
 
 namespace {
@@ -73,20 +71,6 @@ bool finite_rows(const float4 rows[3]) {
   return true;
 }
 
-// A directional (or environment) light's shadow segment runs from the shading point towards the
-// light for `distance`: twice the diagonal of the box around every object (at least 1) leaves the
-// box from any point inside it.
-void set_directional_distance(const std::vector<Aabb>& boxes, PageAlignedVector<Light>& lights) {
-  Aabb world;
-  for (const Aabb& b : boxes) world.grow(b);
-  double diagonal = 0;
-  for (int a = 0; a < 3 && !world.empty(); ++a)
-    diagonal += (double(world.hi[a]) - world.lo[a]) * (double(world.hi[a]) - world.lo[a]);
-  float distance = static_cast<float>(std::max(1.0, 2.0 * std::sqrt(diagonal)));
-  for (Light& l : lights)
-    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_ENVIRONMENT) l.param0 = distance;
-}
-
 // The position of a light stored in float by the loader, moved into the frame in double.
 float3 to_frame(float3 p, Vec3d origin) {
   return to_float3(Vec3d{p.x - origin.x, p.y - origin.y, p.z - origin.z});
@@ -94,7 +78,7 @@ float3 to_frame(float3 p, Vec3d origin) {
 
 }  // namespace
 
-std::vector<Light> tagged_lights(const SceneDesc& scene, Vec3d origin) {
+std::vector<Light> frame_lights(const SceneDesc& scene, Vec3d origin) {
   std::vector<Light> out;
   for (const PointLight& p : scene.point_lights) {
     Light l{};
@@ -103,7 +87,6 @@ std::vector<Light> tagged_lights(const SceneDesc& scene, Vec3d origin) {
     l.emission = p.intensity;
     out.push_back(l);
   }
-  int sampled = 0;
   for (const AreaLight& a : scene.area_lights) {
     Light l{};
     l.type = RT_LIGHT_AREA;
@@ -113,15 +96,18 @@ std::vector<Light> tagged_lights(const SceneDesc& scene, Vec3d origin) {
     l.normal = a.normal;
     l.emission = a.radiance;
     l.area = a.area;
-    l.sample_index = sampled++;
     out.push_back(l);
   }
   for (Light l : scene.lights) {
     // Directional lights have no position; spot lights carry the loader's float one.
     if (l.type == RT_LIGHT_SPOT) l.position = to_frame(l.position, origin);
-    // Directional and spot lights draw no random numbers.
-    if (l.type != RT_LIGHT_DIRECTIONAL && l.type != RT_LIGHT_SPOT) l.sample_index = sampled++;
     out.push_back(l);
+  }
+  for (size_t i = 0; i < out.size(); ++i) {
+    const float3 p = out[i].position;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::invalid_argument("Lights: light " + std::to_string(i + 1) +
+                                  " lies beyond float range from the camera");
   }
   return out;
 }
@@ -149,29 +135,16 @@ Mat4 object_to_frame(const ObjectDesc& object, Vec3d mesh_origin, Vec3d world_or
   return m;
 }
 
-void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const RenderOptions& options) {
-  f.world_origin = origin;
-  std::vector<Light> lights = tagged_lights(scene, origin);
-  f.lights.assign(lights.begin(), lights.end());
-  for (size_t i = 0; i < f.lights.size(); ++i) {
-    const float3 p = f.lights[i].position;
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::invalid_argument("Lights: light " + std::to_string(i + 1) +
-                                  " lies beyond float range from the camera");
-  }
-  f.nodes.resize(f.blas_nodes);  // The bottom levels stay; the top level is rebuilt.
-  // Top level: one leaf per instance, boxes covering the whole shutter interval.
-  std::vector<Instance> unordered;
-  std::vector<InstanceTextures> unordered_textures;
-  std::vector<Aabb> boxes;
-  std::vector<int> object_of;  // The object each entry of `unordered` was made from.
+FramedInstances frame_instances(const SceneDesc& scene, const std::vector<FlatMesh>& meshes,
+                                Vec3d origin) {
+  FramedInstances out;
   Aabb unit;
   unit.grow(-1, -1, -1);
   unit.grow(1, 1, 1);
   for (const ObjectDesc& o : scene.objects) {
+    if (!is_placed(o, meshes)) continue;  // Nothing left after degenerates.
     bool sphere = o.kind == ObjectDesc::kSphere;
-    const FlatMesh* mesh = sphere ? nullptr : &f.meshes[o.mesh];
-    if (!sphere && mesh->blas_root < 0) continue;  // Nothing left after degenerates.
+    const FlatMesh* mesh = sphere ? nullptr : &meshes[o.mesh];
     Instance inst{};
     const Mat4 to_frame = object_to_frame(o, sphere ? Vec3d{} : mesh->origin, origin);
     bool ok;
@@ -195,45 +168,26 @@ void place_world(FlatScene& f, const SceneDesc& scene, Vec3d origin, const Rende
                  (transformed && keeps_world_direction(to_frame) ? RT_INSTANCE_TRANSLATION : 0) |
                  (!sphere && scene.meshes[o.mesh].smooth ? RT_INSTANCE_SMOOTH : 0) |
                  (is_zero(o.motion) ? 0 : RT_INSTANCE_MOVING);
-    unordered.push_back(inst);
-    object_of.push_back(static_cast<int>(&o - scene.objects.data()));
+    out.instances.push_back(inst);
+    out.object.push_back(static_cast<int>(&o - scene.objects.data()));
     InstanceTextures it;
     for (int k = 0; k < RT_MAX_OBJECT_TEXTURES; ++k)
       it.ids[k] = k < static_cast<int>(o.textures.size()) ? o.textures[k] : -1;
-    unordered_textures.push_back(it);
-    boxes.push_back(transformed_box(sphere ? unit : mesh->box, to_frame, o.motion));
+    out.textures.push_back(it);
+    out.boxes.push_back(transformed_box(sphere ? unit : mesh->box, to_frame, o.motion));
   }
-  std::vector<int> order;
-  std::vector<BinaryBvhNode> binary;
-  BvhBuildResult top = build_bvh(boxes, options.bvh, 1, 0, binary, order);
-  WideBvhResult wide_top = collapse_bvh(binary, top.root, WideNodes(f.nodes, f.bvh_width));
-  f.instances.clear();
-  f.instance_textures.clear();
-  std::vector<int> instance_of_object(scene.objects.size(), -1);
-  for (int i : order) {
-    instance_of_object[object_of[i]] = static_cast<int>(f.instances.size());
-    f.instances.push_back(unordered[i]);
-    f.instance_textures.push_back(unordered_textures[i]);
-  }
-  std::vector<int> mesh_first;
-  for (const FlatMesh& m : f.meshes) mesh_first.push_back(m.first_triangle);
-  f.light_cdf.clear();
-  flatten_object_lights(scene, instance_of_object, mesh_first, f);
-  place_environment(scene, f);
-  f.header.tlas_root = wide_top.root;
-  f.stats.tlas_depth = wide_top.depth;
-  f.stats.nodes = f.nodes.size() / wide_units(f.bvh_width);
-  f.stats.instances = f.instances.size();
-  f.header.num_instances = static_cast<int>(f.stats.instances);
-  f.header.num_lights = static_cast<int>(f.lights.size());
-  set_directional_distance(boxes, f.lights);
-  // OpenCL cannot allocate empty buffers; a zeroed element keeps every array non-empty.
-  if (f.lights.empty()) f.lights.emplace_back();
-  if (f.nodes.empty()) f.nodes.resize(wide_units(f.bvh_width));
-  if (f.instances.empty()) f.instances.emplace_back();
-  if (f.instance_textures.empty()) f.instance_textures.emplace_back();
-  if (f.instance_lights.empty()) f.instance_lights.emplace_back();
-  if (f.light_cdf.empty()) f.light_cdf.emplace_back();
+  return out;
+}
+
+void set_directional_distance(const std::vector<Aabb>& boxes, PageAlignedVector<Light>& lights) {
+  Aabb world;
+  for (const Aabb& b : boxes) world.grow(b);
+  double diagonal = 0;
+  for (int a = 0; a < 3 && !world.empty(); ++a)
+    diagonal += (double(world.hi[a]) - world.lo[a]) * (double(world.hi[a]) - world.lo[a]);
+  float distance = static_cast<float>(std::max(1.0, 2.0 * std::sqrt(diagonal)));
+  for (Light& l : lights)
+    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_ENVIRONMENT) l.param0 = distance;
 }
 
 }  // namespace rt

@@ -10,7 +10,7 @@
 #include "util/mat4.h"
 
 // Lights as the file describes them (global, beside the device types they become);
-// flatten_scene turns them into the device's tagged Light array (cl/scene_types.h).
+// prepare_camera turns them into the device's tagged Light array (cl/scene_types.h).
 // Positions stay in double until the world is moved into the camera's frame
 // (src/prepare/world_frame.h); the other members are frame-independent and already float.
 struct PointLight {
@@ -91,7 +91,7 @@ struct SceneDesc {
   std::vector<PointLight> point_lights;
   std::vector<AreaLight> area_lights;
   // Lights of the other types, already in device form (type, members as documented in
-  // cl/scene_types.h); flatten_scene places them after the point and area lights.
+  // cl/scene_types.h); prepare_camera places them after the point and area lights.
   std::vector<Light> lights;
   std::vector<Material> materials;
   std::vector<MeshDesc> meshes;

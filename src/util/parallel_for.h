@@ -34,8 +34,7 @@ void parallel_for(int count, int threads, Fn fn) {
   }
   // The counter has a cache line of its own and each thread its own copy of count and fn:
   // read through references into this frame, they would share lines with what the calling
-  // thread spills there as it works, and each of its writes would cost the others a miss
-  // (the CPU reference's render loop on two threads: 8 % more rays per CPU-second apart).
+  // thread spills there as it works, and each of its writes would cost the others a miss.
   PaddedAtomic<int> next;
   auto work = [&next, count, fn] {
     for (int i; (i = next.value.fetch_add(1)) < count;) fn(i);

@@ -36,7 +36,8 @@ std::string Scene(const std::string& more) {
 }
 
 int MeshLights(const SceneDesc& scene) {
-  FlatScene flat = flatten_scene(scene, RenderOptions{});
+  FlatScene flat = prepare_scene(scene, RenderOptions{});
+  prepare_camera(flat, scene, 0, RenderOptions{});
   int n = 0;
   for (const Light& l : flat.lights) n += l.type == RT_LIGHT_MESH;
   return n;

@@ -20,8 +20,8 @@ namespace rt::test {
 inline std::vector<float> RenderBoth(const SceneDesc& scene, int spp = 0) {
   RenderOptions opt;
   opt.spp = spp;
-  FlatScene flat = flatten_scene(scene, opt);
-  set_camera(flat, scene, 0, opt);
+  FlatScene flat = prepare_scene(scene, opt);
+  prepare_camera(flat, scene, 0, opt);
   RenderResult cpu = render_cpu(flat);
   std::string why;
   if (RenderDevice* cl = shared_device(Device::kOpenCl, &why)) {

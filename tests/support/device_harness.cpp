@@ -22,19 +22,25 @@ bool test_precision_double() {
 }
 
 RenderResult render_on(RenderDevice& device, const FlatScene& flat, const StopRule& stop,
-                       DeviceLoadInfo* load_info) {
+                       DeviceLoadInfo* load_info, const KernelConfig& kernel) {
   Progress quiet(false, "", 0);
-  if (test_precision_double() && !flat.double_precision) {
-    FlatScene in_double = flat;
-    in_double.double_precision = true;
-    return render_camera(device, in_double, quiet, stop, nullptr, load_info);
-  }
-  return render_camera(device, flat, quiet, stop, nullptr, load_info);
+  KernelConfig config = kernel;
+  config.double_precision = config.double_precision || test_precision_double();
+  return render_camera(device, flat, config, quiet, stop, nullptr, load_info);
 }
 
-RenderResult render_cpu(const FlatScene& flat, int threads, const StopRule& stop) {
+RenderResult render_cpu(const FlatScene& flat, int threads, const StopRule& stop,
+                        const KernelConfig& kernel) {
   CpuDevice device(threads);
-  return render_on(device, flat, stop);
+  return render_on(device, flat, stop, nullptr, kernel);
+}
+
+PreparedScene prepare_on(const RenderDevice& device, const SceneDesc& scene, int camera,
+                         const RenderOptions& options) {
+  std::string notice;
+  PreparedScene prepared = prepare_for_device(scene, options, device, &notice);
+  prepare_camera(prepared, scene, camera);
+  return prepared;
 }
 
 const char* device_label(Device kind) { return kind == Device::kCpu ? "cpu" : "cl"; }

@@ -20,12 +20,19 @@ RenderDevice* shared_device(Device kind, std::string* why, bool generic_kernel =
 // precision (README: precision).
 bool test_precision_double();
 
-// Renders on `device` with progress off (in double when test_precision_double()).
+// Renders on `device` with progress off, with the kernel `kernel` configures (in double when
+// test_precision_double()).
 RenderResult render_on(RenderDevice& device, const FlatScene& flat, const StopRule& stop = {},
-                       DeviceLoadInfo* load_info = nullptr);
+                       DeviceLoadInfo* load_info = nullptr, const KernelConfig& kernel = {});
 
 // Renders on a fresh CPU reference of `threads` threads (0: all cores).
-RenderResult render_cpu(const FlatScene& flat, int threads = 0, const StopRule& stop = {});
+RenderResult render_cpu(const FlatScene& flat, int threads = 0, const StopRule& stop = {},
+                        const KernelConfig& kernel = {});
+
+// Camera `camera` of `scene` prepared for `device` as the executable prepares it
+// (prepare_for_device, then prepare_camera).
+PreparedScene prepare_on(const RenderDevice& device, const SceneDesc& scene, int camera,
+                         const RenderOptions& options);
 
 // The sample count every pixel of `r` holds, or -1 when they differ (the stop rules stop
 // between passes only, so every pixel must hold the same).

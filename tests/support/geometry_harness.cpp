@@ -70,8 +70,8 @@ FlatScene Flatten(const SceneDesc& s, int bins, int max_leaf) {
   opt.bvh.bins = bins;
   opt.bvh.max_leaf = max_leaf;
   opt.camera_frame = false;  // The tests trace rays given in world coordinates.
-  FlatScene f = flatten_scene(s, opt);
-  set_camera(f, s, 0, opt);
+  FlatScene f = prepare_scene(s, opt);
+  prepare_camera(f, s, 0, opt);
   return f;
 }
 

@@ -1,6 +1,7 @@
 // Helpers of the geometry tests (triangle, sphere, watertightness, transforms, ray offsets,
 // BVH): conversions between float3 and double vectors, small scenes built in code, and
-// tracing through the full scene path (SceneDesc -> flatten_scene -> IntersectScene).
+// tracing through the full scene path (SceneDesc -> prepare_scene, prepare_camera ->
+// IntersectScene).
 //
 // Tolerances in those tests: cases whose operands are small dyadic numbers are exact in float
 // and are compared with ==. Everything else is compared with a double-precision reference and

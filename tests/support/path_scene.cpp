@@ -21,8 +21,8 @@ FlatScene flatten_path_camera(const SceneDesc& scene, int camera, int spp, uint3
   RenderOptions o;
   o.spp = spp;
   o.seed = seed;
-  FlatScene flat = flatten_scene(scene, o);
-  set_camera(flat, scene, camera, o);
+  FlatScene flat = prepare_scene(scene, o);
+  prepare_camera(flat, scene, camera, o);
   return flat;
 }
 

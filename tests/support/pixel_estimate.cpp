@@ -12,8 +12,8 @@
 namespace rt::test {
 
 PixelStats RenderOnePixel(const SceneDesc& scene, const RenderOptions& opt) {
-  FlatScene flat = flatten_scene(scene, opt);
-  set_camera(flat, scene, 0, opt);
+  FlatScene flat = prepare_scene(scene, opt);
+  prepare_camera(flat, scene, 0, opt);
   RenderResult r = render_cpu(flat);
   EXPECT_EQ(r.accum[0].nonfinite, 0u);
   const PixelEstimate e = estimate_pixel(r.accum[0]);

@@ -17,8 +17,8 @@ namespace stab {
 const char* Name(Dev d) { return rt::test::device_label(d); }
 
 rt::FlatScene Flatten(const rt::SceneDesc& s, const rt::RenderOptions& o, int camera) {
-  rt::FlatScene f = rt::flatten_scene(s, o);
-  rt::set_camera(f, s, camera, o);
+  rt::FlatScene f = rt::prepare_scene(s, o);
+  rt::prepare_camera(f, s, camera, o);
   return f;
 }
 

@@ -6,9 +6,9 @@
 
 #include "bvh/bvh_lanes.h"
 #include "cl/features.h"
-#include "device/cl/cl_scene_buffers.h"
 #include "device/cl/cl_platform.h"
 #include "device/cl/cl_program.h"
+#include "device/cl/cl_scene_buffers.h"
 
 namespace rt {
 namespace {
@@ -35,13 +35,13 @@ class ClDevice final : public RenderDevice {
   std::string name() const override { return name_; }
   bool has_double() const override { return programs_->has_double(); }
   // PoCL on an x86 CPU traverses 8-wide nodes faster than 4-wide ones, where the CPU
-  // reference (GCC) is faster with 4 (docs/figures_history.md, 2026-12-03, session 14).
-  // No GPU has been measured: it keeps the 4-wide nodes every device used before.
+  // reference (GCC) is faster with 4. No GPU has been compared: it keeps the 4-wide nodes
+  // every device used before.
   int bvh_width() const override { return programs_->is_cpu() ? 8 : std::max(4, RT_BVH_WIDTH); }
   bool supports_bvh_width(int width) const override { return valid_bvh_width(width); }
-  void check_memory(const FlatScene& flat, uint64_t host_bytes) const override;
+  void check_memory(const MemoryNeed& need) const override;
   int row_alignment() const override { return program_ ? static_cast<int>(program_->local_y) : 1; }
-  DeviceLoadInfo load(const FlatScene& flat) override;
+  DeviceLoadInfo load(const FlatScene& flat, const KernelConfig& kernel) override;
   uint64_t render(const RenderWork& work) override;
   void read_accum(std::vector<PixelAccum>* accum) override { read(accum_, accum); }
   void read_primary(std::vector<PrimaryInfo>* primary) override { read(primary_, primary); }
@@ -83,10 +83,9 @@ class ClDevice final : public RenderDevice {
 // Refuses, before anything is allocated, a scene the device cannot hold: each buffer within
 // the device's largest allocation, all of them within its memory, and the host's copies
 // within the host's.
-void ClDevice::check_memory(const FlatScene& flat, uint64_t host_bytes) const {
-  const uint64_t pixels =
-      static_cast<uint64_t>(flat.header.camera.width) * flat.header.camera.height;
-  std::vector<std::pair<const char*, uint64_t>> sizes = scene_array_bytes(flat);
+void ClDevice::check_memory(const MemoryNeed& need) const {
+  const uint64_t pixels = static_cast<uint64_t>(need.width) * need.height;
+  std::vector<std::pair<const char*, uint64_t>> sizes = scene_array_bytes(need.arrays);
   sizes.emplace_back("accum", sizeof(PixelAccum) * pixels);
   sizes.emplace_back("primary", sizeof(PrimaryInfo) * pixels);
   uint64_t total = 0, largest = 0;
@@ -94,27 +93,26 @@ void ClDevice::check_memory(const FlatScene& flat, uint64_t host_bytes) const {
     total += buffer.second;
     largest = std::max(largest, buffer.second);
   }
-  check_memory_limit(flat, largest, max_alloc_, "OpenCL memory in one buffer",
+  check_memory_limit(need, largest, max_alloc_, "OpenCL memory in one buffer",
                      "the " + format_bytes(max_alloc_) + " per buffer of " + name_);
-  check_memory_limit(flat, total, global_mem_, "OpenCL memory",
+  check_memory_limit(need, total, global_mem_, "OpenCL memory",
                      "the " + format_bytes(global_mem_) + " of " + name_);
   const uint64_t limit = available_host_memory();
-  check_memory_limit(flat, host_bytes, limit, "host memory",
+  check_memory_limit(need, need.host_bytes, limit, "host memory",
                      "the " + format_bytes(limit) + " available");
 }
 
-DeviceLoadInfo ClDevice::load(const FlatScene& flat) {
+DeviceLoadInfo ClDevice::load(const FlatScene& flat, const KernelConfig& kernel) {
   width_ = flat.header.camera.width;
   height_ = flat.header.camera.height;
   pixels_ = static_cast<size_t>(width_) * height_;
   program_ = nullptr;
-  check_memory(flat, 0);
+  check_memory({array_counts(flat), width_, height_, 0});
   DeviceLoadInfo info;
   info.build_options =
-      programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, flat.fast_math,
-                             flat.double_precision, flat.bvh_width);
+      programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, kernel);
   ClProgram& p =
-      programs_->get(info.build_options, flat.bvh_width, &info.compile_ms, &info.cache_hit);
+      programs_->get(info.build_options, kernel.bvh_width, &info.compile_ms, &info.cache_hit);
   auto since = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
   };

@@ -67,19 +67,18 @@ void check_precision_support(const std::string& device_name, bool has_fp64, bool
                              "it; use --precision float or --device cpu");
 }
 
-std::string ClProgramCache::options_for(int features, bool fast_math, bool double_precision,
-                                        int bvh_width) const {
-  check_precision_support(name_, fp64_, double_precision);
+std::string ClProgramCache::options_for(int features, const KernelConfig& kernel) const {
+  check_precision_support(name_, fp64_, kernel.double_precision);
   std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
   // The width of the nodes and triangle blocks the host built (cl/bvh/simd.h, src/bvh/bvh_lanes.h).
-  o += " -DRT_BVH_WIDTH=" + std::to_string(bvh_width);
-  if (double_precision) o += " -DRT_REAL_DOUBLE=1";
+  o += " -DRT_BVH_WIDTH=" + std::to_string(kernel.bvh_width);
+  if (kernel.double_precision) o += " -DRT_REAL_DOUBLE=1";
   // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/film/film.h).
   if (cpu_) o += " -DRT_CL_CPU_DEVICE=1";
   if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
   // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).
   if (const char* extra = std::getenv("RT_CL_OPTIONS")) o += std::string(" ") + extra;
-  if (fast_math) o += " -cl-fast-relaxed-math";
+  if (kernel.fast_math) o += " -cl-fast-relaxed-math";
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "device/cl/opencl.h"
+#include "device/kernel_config.h"
 
 namespace rt {
 
@@ -24,10 +25,11 @@ class ClProgramCache {
   ClProgramCache(const cl::Context& context, const cl::Device& device, bool use_disk_cache);
   // The build options for a feature set: the defines (the scene's node width among them),
   // exact division and square root when the device offers them, RT_CL_CPU_DEVICE on a CPU
-  // device, `fast_math`, RT_REAL_DOUBLE for `double_precision` (which throws, naming the
-  // device, when it lacks cl_khr_fp64), and RT_CL_OPTIONS (a developer's knob). The options
-  // key both the in-memory and the on-disk cache.
-  std::string options_for(int features, bool fast_math, bool double_precision, int bvh_width) const;
+  // device, the kernel configuration's fast math, node width and RT_REAL_DOUBLE for double
+  // precision (which throws, naming the device, when it lacks cl_khr_fp64), and
+  // RT_CL_OPTIONS (a developer's knob). The options key both the in-memory and the on-disk
+  // cache.
+  std::string options_for(int features, const KernelConfig& kernel) const;
   // The program built with `options`, whose node width is `bvh_width`. *compile_ms is the
   // time it took (0 when it was in memory), *cache_hit whether it came from memory or the
   // disk cache. Throws std::runtime_error (one line; the build log goes to stderr in full).

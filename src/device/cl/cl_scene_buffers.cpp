@@ -48,9 +48,9 @@ int bind_scene(cl::Kernel& kernel, const ClSceneBuffers& buffers, int first_arg)
   return arg;
 }
 
-std::vector<std::pair<const char*, uint64_t>> scene_array_bytes(const FlatScene& flat) {
+std::vector<std::pair<const char*, uint64_t>> scene_array_bytes(const ArrayCounts& counts) {
   std::vector<std::pair<const char*, uint64_t>> out = {{"header", sizeof(SceneHeader)}};
-#define RT_ARRAY_BYTES(Type, name) out.emplace_back(#name, sizeof(Type) * flat.name.size());
+#define RT_ARRAY_BYTES(Type, name) out.emplace_back(#name, sizeof(Type) * counts.name);
   RT_DATA_ARRAYS(RT_ARRAY_BYTES)
 #undef RT_ARRAY_BYTES
   return out;

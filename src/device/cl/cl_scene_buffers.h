@@ -35,8 +35,9 @@ ClSceneBuffers upload_scene(const cl::Context& context, const FlatScene& flat, b
 // next free argument index.
 int bind_scene(cl::Kernel& kernel, const ClSceneBuffers& buffers, int first_arg);
 
-// The bytes of every buffer upload_scene makes, named, for the memory check.
-std::vector<std::pair<const char*, uint64_t>> scene_array_bytes(const FlatScene& flat);
+// The bytes of every buffer upload_scene makes for arrays of `counts` elements, named, for
+// the memory check.
+std::vector<std::pair<const char*, uint64_t>> scene_array_bytes(const ArrayCounts& counts);
 
 // Host sizes of the shared structs, in the order the kernel `rt_sizes` (cl/kernel.cl)
 // writes the device's, for a kernel built for nodes of `bvh_width` children.
@@ -46,7 +47,6 @@ std::vector<std::pair<const char*, uint64_t>> scene_layout(int bvh_width = RT_BV
 // line naming the struct and both sizes) when a struct differs between the host and
 // `device_name`.
 void check_scene_layout(const cl::Context& context, cl::CommandQueue& queue,
-                        const cl::Program& program, const std::string& device_name,
-                        int bvh_width);
+                        const cl::Program& program, const std::string& device_name, int bvh_width);
 
 }  // namespace rt

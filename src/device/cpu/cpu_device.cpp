@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "device/cpu/cpu_kernel.h"
 #include "util/parallel_for.h"
 
 namespace rt {
@@ -14,22 +13,22 @@ CpuDevice::CpuDevice(int threads) : threads_(resolve_threads(threads)) {}
 
 // The film lives in host memory, beside the caller's outputs; the scene arrays are
 // already allocated.
-void CpuDevice::check_memory(const FlatScene& flat, uint64_t host_bytes) const {
-  const uint64_t pixels =
-      static_cast<uint64_t>(flat.header.camera.width) * flat.header.camera.height;
+void CpuDevice::check_memory(const MemoryNeed& need) const {
+  const uint64_t pixels = static_cast<uint64_t>(need.width) * need.height;
   const uint64_t limit = available_host_memory();
-  check_memory_limit(flat, pixels * kFilmBytesPerPixel + host_bytes, limit, "memory",
+  check_memory_limit(need, pixels * kFilmBytesPerPixel + need.host_bytes, limit, "memory",
                      "the " + format_bytes(limit) + " available");
 }
 
-DeviceLoadInfo CpuDevice::load(const FlatScene& flat) {
-  if (!supports_bvh_width(flat.bvh_width))
-    throw std::runtime_error("cpu-reference: the scene was flattened for " +
-                             std::to_string(flat.bvh_width) +
+DeviceLoadInfo CpuDevice::load(const FlatScene& flat, const KernelConfig& kernel) {
+  if (!supports_bvh_width(kernel.bvh_width))
+    throw std::runtime_error("cpu-reference: the scene was prepared for " +
+                             std::to_string(kernel.bvh_width) +
                              "-wide BVH nodes, but the CPU "
                              "reference is compiled for " +
                              std::to_string(RT_BVH_WIDTH));
   flat_ = &flat;
+  accumulate_ = select_cpu_kernel(kernel.double_precision).accumulate;
   view_ = flat.view();
   const size_t pixels = static_cast<size_t>(flat.header.camera.width) * flat.header.camera.height;
   accum_.assign(pixels, PixelAccum{});
@@ -41,13 +40,13 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   const int width = flat_->header.camera.width;
   const size_t first = static_cast<size_t>(work.row_begin) * width;
   const size_t count = static_cast<size_t>(work.rows()) * width;
-  const CpuPixelFunction accumulate = select_cpu_kernel(flat_->double_precision).accumulate;
+  const CpuPixelFunction accumulate = accumulate_;
   // Threads take chunks of pixels, not rows, so a pass over a band of a few rows still
   // keeps every thread busy to its end. Each pixel is taken by one thread, which adds its
   // samples in order: the image does not depend on the thread count. A chunk gives every
   // thread about 16 (its last one then a small part of its work), from 16 to 256 pixels:
-  // long runs of film records let each core's prefetcher stay ahead (tap_0200's camera rays
-  // on two threads took 6 % more CPU time with 16-pixel chunks than with 256).
+  // long runs of film records let each core's prefetcher stay ahead, where short chunks
+  // leave it restarting on every chunk.
   const size_t chunk = std::clamp<size_t>(count / (16 * static_cast<size_t>(threads_)), 16, 256);
   const int chunks = static_cast<int>((count + chunk - 1) / chunk);
   // Each thread copies the loop's values (parallel_for copies fn): read through references

@@ -1,6 +1,7 @@
 // The CPU reference: the kernel's code (cl/) compiled as C++, run on host threads.
 #pragma once
 
+#include "device/cpu/cpu_kernel.h"
 #include "device/device.h"
 
 namespace rt {
@@ -11,8 +12,8 @@ class CpuDevice final : public RenderDevice {
   explicit CpuDevice(int threads);
   std::string name() const override { return "cpu-reference"; }
   bool has_double() const override { return true; }
-  void check_memory(const FlatScene& flat, uint64_t host_bytes) const override;
-  DeviceLoadInfo load(const FlatScene& flat) override;
+  void check_memory(const MemoryNeed& need) const override;
+  DeviceLoadInfo load(const FlatScene& flat, const KernelConfig& kernel) override;
   uint64_t render(const RenderWork& work) override;
   void read_accum(std::vector<PixelAccum>* accum) override { *accum = accum_; }
   void read_primary(std::vector<PrimaryInfo>* primary) override { *primary = primary_; }
@@ -20,6 +21,7 @@ class CpuDevice final : public RenderDevice {
  private:
   int threads_;
   const FlatScene* flat_ = nullptr;
+  CpuPixelFunction accumulate_ = nullptr;
   SceneData view_{};
   std::vector<PixelAccum> accum_;
   std::vector<PrimaryInfo> primary_;

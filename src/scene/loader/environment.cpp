@@ -75,7 +75,7 @@ void Loader::read_environment_light(const XMLElement* light, const XMLElement* s
     fail(id_e,
          "environment map " + path.string() + ": " + bad + " (radiance must be finite and >= 0)");
   scene_.environment_map = std::move(map);
-  scene_.lights.push_back(env);  // flatten_scene places the map and sets the sizes.
+  scene_.lights.push_back(env);  // prepare_scene places the map, prepare_camera the sizes.
 }
 
 }  // namespace loader

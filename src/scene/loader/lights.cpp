@@ -77,7 +77,7 @@ void Loader::read_lights(const XMLElement* scene) {
       const XMLElement* dir = child(l, "Direction", true);
       d.normal = to_float3(normalize(nonzero(dir, vec3(dir))));
       d.emission = to_float3(non_negative(child(l, "Radiance", true)));
-      scene_.lights.push_back(d);  // flatten_scene sets param0 from the scene's bounds.
+      scene_.lights.push_back(d);  // prepare_camera sets param0 from the scene's bounds.
     } else if (name == "SpotLight") {
       Light s{};
       s.type = RT_LIGHT_SPOT;
