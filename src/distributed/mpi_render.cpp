@@ -12,10 +12,10 @@
 #include <mutex>
 #include <thread>
 
+#include "app/render_job.h"
 #include "distributed/coordinator.h"
 #include "distributed/mpi_link.h"
 #include "distributed/tile_worker.h"
-#include "app/render_job.h"
 #include "util/parallel_for.h"
 
 namespace rt {
@@ -276,7 +276,10 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
         local.reset();
       }
     }
-    if (idle) std::this_thread::sleep_for(std::chrono::microseconds(500));
+    if (idle) {
+      job.tick();
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
   }
   job.finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (!setup_error.empty()) {
