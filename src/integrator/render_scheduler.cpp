@@ -92,24 +92,30 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
   double rays_per_sample = -1;  // < 0: not measured yet (or the device counts them itself).
   bool device_counts = false;
   for (std::vector<RenderWork> pass = scheduler.plan(); !pass.empty(); pass = scheduler.plan()) {
-    uint64_t pass_samples = 0;
+    // The pass that measures the rate reports its samples with its rays, after the film
+    // is read, so no line shows its samples at a zero rate.
+    const bool measure = !device_counts && rays_per_sample < 0 && progress.enabled();
+    uint64_t pass_samples = 0, pass_rays = 0;
     for (const RenderWork& w : pass) {
       const auto t0 = Clock::now();
       const uint64_t rays = device.render(w);
       scheduler.record(w, since(t0));
       const uint64_t samples = static_cast<uint64_t>(w.rows()) * cam.width * w.samples();
-      device_counts = device_counts || rays > 0;
       pass_samples += samples;
+      pass_rays += rays;
+      if (measure) continue;
       progress.add(samples, device_counts || rays_per_sample < 0
                                 ? rays
                                 : static_cast<uint64_t>(samples * rays_per_sample));
     }
-    if (!device_counts && rays_per_sample < 0 && pass_samples > 0 && progress.enabled()) {
-      device.read_accum(&accum);
-      uint64_t rays = 0;
-      for (const PixelAccum& a : accum) rays += a.rays;
-      rays_per_sample = static_cast<double>(rays) / static_cast<double>(pass_samples);
-      progress.add(0, rays);
+    if (measure) {
+      device_counts = pass_rays > 0;
+      if (!device_counts) {
+        device.read_accum(&accum);
+        for (const PixelAccum& a : accum) pass_rays += a.rays;
+        rays_per_sample = static_cast<double>(pass_rays) / std::max<uint64_t>(pass_samples, 1);
+      }
+      progress.add(pass_samples, pass_rays);
     }
     if (cancel && cancel->load()) {
       if (cancelled) *cancelled = scheduler.samples_done() < cam.samples;
