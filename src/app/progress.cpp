@@ -1,6 +1,7 @@
 #include "progress.h"
 
 #include <fcntl.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -17,10 +18,26 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// The terminal's width in columns; 0 when stderr is not a terminal (under mpirun it is
+// a pipe, and the job line is kept short instead).
+size_t terminal_columns() {
+  winsize w{};
+  return ioctl(STDERR_FILENO, TIOCGWINSZ, &w) == 0 ? w.ws_col : 0;
+}
+
+// `text` cut to one row of the terminal: a line that wrapped would be redrawn from its
+// last row only, leaving the rows above behind. The head is cut, so the figures at the
+// end stay.
+std::string fit(const std::string& text) {
+  const size_t cols = terminal_columns();
+  if (cols < 8 || text.size() < cols) return text;
+  return "..." + text.substr(text.size() - (cols - 4));
+}
+
 // Draws `text` over the current line: \r, the text, then "erase to the end of the line",
 // so a shorter line leaves nothing of a longer one behind.
 void draw_line(const std::string& text) {
-  std::fprintf(stderr, "\r%s\x1b[K", text.c_str());
+  std::fprintf(stderr, "\r%s\x1b[K", fit(text).c_str());
   std::fflush(stderr);
 }
 
@@ -156,8 +173,8 @@ void print_wrote(bool quiet, const std::string& file, int spp, double seconds) {
   std::fprintf(stderr, "wrote %s (%d spp, %.2f s)\n", file.c_str(), spp, seconds);
 }
 
-JobProgress::JobProgress(bool enabled, int images, int tasks, int ranks, uint64_t pixels)
-    : enabled_(enabled), images_(images), tasks_(tasks), ranks_(ranks), pixels_(pixels) {
+JobProgress::JobProgress(bool enabled, int images, int tasks, uint64_t pixels)
+    : enabled_(enabled), images_(images), tasks_(tasks), pixels_(pixels) {
   start_ = last_draw_ = Clock::now();
   if (enabled_) draw();
 }
@@ -186,10 +203,9 @@ void JobProgress::draw() {
   const double frac = pixels_ ? static_cast<double>(pixels_done_) / pixels_ : 1.0;
   char buf[200];
   std::snprintf(buf, sizeof buf,
-                "job: %d of %d %s done, %d of %d images written (%.1f %%), %d ranks, elapsed "
-                "%s, left %s",
+                "job: %d of %d %s, %d of %d images written (%.1f %%), elapsed %s, left %s",
                 tasks_done_, tasks_, tasks_ == images_ ? "images" : "tiles", images_done_, images_,
-                100 * frac, ranks_, format_duration(elapsed).c_str(),
+                100 * frac, format_duration(elapsed).c_str(),
                 frac > 0 ? format_duration(elapsed * (1 - frac) / frac).c_str() : "?");
   draw_line(buf);
 }

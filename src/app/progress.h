@@ -67,7 +67,7 @@ std::string format_duration(double seconds);
 // the total, images written, elapsed and time left from the pixels finished.
 class JobProgress {
  public:
-  JobProgress(bool enabled, int images, int tasks, int ranks, uint64_t pixels);
+  JobProgress(bool enabled, int images, int tasks, uint64_t pixels);
   void task_done(uint64_t pixels, bool image_written);
   // Redraws at most once a second, so elapsed time moves while long tasks run.
   void tick();
@@ -79,7 +79,7 @@ class JobProgress {
  private:
   void draw();
   bool enabled_;
-  int images_, tasks_, ranks_, images_done_ = 0, tasks_done_ = 0;
+  int images_, tasks_, images_done_ = 0, tasks_done_ = 0;
   uint64_t pixels_, pixels_done_ = 0;
   std::chrono::steady_clock::time_point start_, last_draw_;
 };

@@ -26,7 +26,7 @@ JobCoordinator::JobCoordinator(const CliOptions& opt, JobPlan plan, int ranks)
       busy_s_(ranks, 0.0),
       tasks_done_(ranks, 0),
       progress_(Progress::wanted_mpi(opt.quiet), static_cast<int>(plan_.images.size()),
-                static_cast<int>(plan_.tasks.size()), ranks, job_pixels(plan_)) {
+                static_cast<int>(plan_.tasks.size()), job_pixels(plan_)) {
   for (size_t i = 0; i < plan_.images.size(); ++i) films_[i].rows_left = plan_.images[i].height;
 }
 

@@ -15,9 +15,10 @@
 # notice:      cornellbox_boxes_dynamic (camera outside the box's front wall) prints the
 #              one --cull-back-faces notice (100 % of camera rays hit a back face); not
 #              with --cull-back-faces or --quiet, nor for hw1/cornellbox, which doesn't
-#              need it. Of the 110 course scenes of tests/course_scenes.txt rendered
-#              without culling only hw3's and spring2021's cornellbox_boxes_dynamic print it,
-#              both rendered by the course with --cull-back-faces.
+#              need it. Of the 75 course scenes of tests/course_scenes.txt rendered
+#              without culling (74 load; trex_smooth lacks a PLY file) only hw3's and
+#              spring2021's cornellbox_boxes_dynamic print it, both rendered by the course
+#              with --cull-back-faces (the shares: src/app/backface_notice.h).
 # Exit status: 0 pass, 1 fail, 77 skipped (no OpenCL device, no scenes, no MPI).
 set -uo pipefail
 rt="$1" scenes="$2" work="$3" case="$4" arg="${5:-}"
@@ -96,9 +97,9 @@ case "$case" in
     mkdir -p tty log
     pty tty.txt "${mpi[@]}" --output-dir tty || fail "mpirun failed: $(lines tty.txt | tail -3)"
     lines tty.txt > tty.lines
-    grep -Eq '^job: [0-9]+ of [0-9]+ (tiles|images) done, [0-2] of 2 images written \([0-9.]+ %\), 2 ranks, elapsed [0-9.]+ s, left' tty.lines ||
+    grep -Eq '^job: [0-9]+ of [0-9]+ (tiles|images), [0-2] of 2 images written \([0-9.]+ %\), elapsed [0-9.]+ s, left' tty.lines ||
       fail "no job-wide line under mpirun on a terminal: $(head -c 400 tty.lines)"
-    grep -Eq '^job: [0-9]+ of [0-9]+ (tiles|images) done, 0 of 2' tty.lines || fail "the job line never showed the start"
+    grep -Eq '^job: 0 of [0-9]+ (tiles|images), 0 of 2' tty.lines || fail "the job line never showed the start"
     for f in Car_smooth Car_front_smooth; do
       grep -Eq "^wrote tty/$f\.png \(16 spp, [0-9.]+ s\)$" tty.lines || fail "no wrote line for $f under mpirun"
     done
