@@ -20,8 +20,9 @@ namespace rt {
 class Progress {
  public:
   // One image of `pixels` pixels and `spp` samples per pixel; `label` heads the line
-  // ("[2/9] tap_0200.png").
-  Progress(bool enabled, std::string label, uint64_t pixels, int spp);
+  // ("[2/9] tap_0200.png"). A Progress that is not enabled, a sink for the scheduler's
+  // reports, needs no counts.
+  Progress(bool enabled, std::string label, uint64_t pixels = 0, int spp = 1);
   // Sampling starts now: elapsed time and the rate leave out loading and compiling.
   void begin();
   // Adds finished work (pixel samples, rays cast); safe from any thread; redraws at most

@@ -44,7 +44,7 @@ TileResult TileWorker::render(const TileTask& task) {
     throw std::runtime_error(name + ": a tile starting at row " + std::to_string(task.row_begin) +
                              " is not aligned to the device's " + std::to_string(align) +
                              "-row work-groups");
-  Progress quiet(false, name, 0, 0);
+  Progress quiet(false, name, 0);
   TileResult out;
   out.task = task;
   out.spp = sample_rows(*device_, cam, task.row_begin, task.row_end, quiet,

@@ -55,7 +55,9 @@ case "$case" in
     lines run1.txt > run1.lines
     re='^\[([1-3])/3\] [A-Za-z_]+\.png: [0-9]+ of 64 spp \([0-9.]+ %\), elapsed [0-9.]+ s, ([0-9.]+) Mrays/s, left [0-9.]+ s$'
     grep -Eq "$re" run1.lines || fail "no progress line of the form [k/3] NAME: S of 64 spp (P %), elapsed E, R Mrays/s, left L in: $(head -c 600 run1.lines)"
-    zero=$(grep -E "$re" run1.lines | sed -E "s/$re/\2/" | awk '$1 <= 0' | wc -l)
+    grep -E "$re" run1.lines | sed -E "s#$re#\2#" > rates.txt || fail "cannot read the rates"
+    [ "$(wc -l < rates.txt)" = "$(grep -Ec "$re" run1.lines)" ] || fail "cannot read the rates"
+    zero=$(awk '$1 <= 0' rates.txt | wc -l)
     [ "$zero" = 0 ] || fail "$zero progress lines show 0 Mrays/s: $(grep -m1 ' 0.00 Mrays/s' run1.lines)"
     for k in "1/3] Car_smooth.png" "2/3] Car_front_smooth.png" "3/3] simple.png"; do
       grep -Fq "[$k: " run1.lines || fail "no progress line for [$k"
