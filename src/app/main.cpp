@@ -59,6 +59,7 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
   const bool new_device = !device;
   if (new_device) {
     std::string notice;
+    rt::show_status(live, "opening the device...");
     device = rt::create_device(rt::device_options(opt, 0, opt.threads), &notice);
     rt::clear_status(live);
     if (!notice.empty() && !opt.quiet) std::fprintf(stderr, "notice: %s\n", notice.c_str());
