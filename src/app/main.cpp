@@ -7,11 +7,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "backface_notice.h"
 #include "cli.h"
 #include "device/cl/cl_platform.h"
 #include "device/device.h"
 #include "integrator/render_scheduler.h"
 #include "interrupt.h"
+#include "job_count.h"
+#include "progress.h"
 #include "render_job.h"
 #ifdef RT_WITH_MPI
 #include "distributed/mpi_render.h"
@@ -40,19 +43,31 @@ void print_stats(const std::string& out, const rt::RenderDevice& device, const r
     std::fprintf(stderr, "stats: degenerate triangles skipped: %d\n", s.desc.degenerate_triangles);
 }
 
+// Where the job stands, for the progress line's "[k/n]": images started, and the job's
+// images (counted from the files' text ahead, corrected as each file is loaded).
+struct JobCount {
+  int started = 0, total = 0;
+  bool back_face_notice_given = false;
+};
+
 // Renders the cameras of one scene file; returns false when an interrupt ended sampling.
 bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
-                  std::unique_ptr<rt::RenderDevice>& device, bool last_scene) {
+                  std::unique_ptr<rt::RenderDevice>& device, bool last_scene, JobCount& job) {
   const std::vector<int> cameras = rt::job_cameras(opt, s);
+  const bool live = rt::Progress::wanted(opt.quiet);
   if (cameras.empty()) return true;
   const bool new_device = !device;
   if (new_device) {
     std::string notice;
+    rt::show_status(live, "opening the device...");
     device = rt::create_device(rt::device_options(opt, 0, opt.threads), &notice);
+    rt::clear_status(live);
     if (!notice.empty() && !opt.quiet) std::fprintf(stderr, "notice: %s\n", notice.c_str());
   }
   std::string notice;
+  rt::show_status(live, "building the BVH of " + s.path + "...");
   rt::PreparedScene prepared = rt::prepare_for_device(s.desc, opt.render, *device, &notice);
+  rt::clear_status(live);
   if (new_device && !notice.empty() && !opt.quiet)
     std::fprintf(stderr, "notice: %s\n", notice.c_str());
   const rt::FlatScene& flat = prepared.flat;
@@ -77,8 +92,10 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
                                e.what());
     }
     const Camera& fc = flat.header.camera;
-    rt::Progress progress(rt::Progress::wanted(opt.quiet), s.desc.cameras[c].image_name,
-                          static_cast<uint64_t>(fc.width) * fc.height * fc.samples);
+    const std::string label = "[" + std::to_string(++job.started) + "/" +
+                              std::to_string(job.total) + "] " + s.desc.cameras[c].image_name;
+    rt::show_status(live, label + ": preparing the device...");
+    rt::Progress progress(live, label, static_cast<uint64_t>(fc.width) * fc.height, fc.samples);
     rt::DeviceLoadInfo load;
     rt::RenderResult r = rt::render_camera(*device, flat, prepared.kernel, progress,
                                            rt::camera_stop_rule(opt.render.stop, s.desc.cameras[c]),
@@ -86,6 +103,12 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
     progress.finish();
     const std::string out = rt::image_path(opt, s, c);
     rt::write_outputs(opt, s.path, c, s.desc.cameras[c], device->name(), r, out);
+    rt::print_wrote(opt.quiet, out, r.spp, r.seconds);
+    if (!opt.quiet && !opt.render.cull_back_faces && !job.back_face_notice_given) {
+      const std::string text = rt::back_face_notice(rt::back_face_share(fc, r.primary));
+      job.back_face_notice_given = !text.empty();
+      if (!text.empty()) std::fprintf(stderr, "notice: %s: %s\n", out.c_str(), text.c_str());
+    }
     if (opt.stats) print_stats(out, *device, s, prepared, load, r);
     if (rt::stop_requested().load()) {
       std::fprintf(
@@ -105,11 +128,26 @@ int run(const rt::CliOptions& opt) {
   if (rt::launched_by_mpi()) return rt::render_distributed(opt);
 #endif
   std::unique_ptr<rt::RenderDevice> device;
+  const bool live = rt::Progress::wanted(opt.quiet);
+  rt::enable_status_reports(live);  // The OpenCL kernel compile says so (cl_program.cpp).
+  JobCount job;
+  std::vector<int> counted(opt.scenes.size());
   for (size_t i = 0; i < opt.scenes.size(); ++i) {
-    const rt::JobScene s = rt::load_job_scene(opt.scenes[i], opt, true);
-    if (!render_scene(opt, s, device, i + 1 == opt.scenes.size()))
+    counted[i] = opt.camera >= 0 ? 1 : rt::count_scene_cameras(opt.scenes[i]);
+    job.total += counted[i];
+  }
+  for (size_t i = 0; i < opt.scenes.size(); ++i) {
+    rt::show_status(live, "loading " + opt.scenes[i] + "...");
+    // Warnings printed after the status is cleared, so they start a line of their own.
+    const rt::JobScene s = rt::load_job_scene(opt.scenes[i], opt, false);
+    rt::clear_status(live);
+    if (!opt.quiet)
+      for (const auto& w : s.desc.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    job.total += static_cast<int>(rt::job_cameras(opt, s).size()) - counted[i];
+    if (!render_scene(opt, s, device, i + 1 == opt.scenes.size(), job))
       return rt::kInterruptedExitStatus;
   }
+  rt::clear_status(live);
   return 0;
 }
 
@@ -125,6 +163,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "raytracer: error: out of memory\n");
     return 1;
   } catch (const std::exception& e) {
+    rt::clear_status(rt::Progress::wanted(opt.quiet));
     std::fprintf(stderr, "raytracer: error: %s\n", e.what());
     return 1;
   }

@@ -15,21 +15,18 @@ uint64_t job_pixels(const JobPlan& plan) {
   return n;
 }
 
-std::string job_label(const JobPlan& plan, int ranks) {
-  return std::to_string(plan.images.size()) + " images, " + std::to_string(plan.tasks.size()) +
-         " tasks, " + std::to_string(ranks) + " ranks";
-}
-
 }  // namespace
 
-// Progress counts pixels finished (the sample counts of images may differ).
+// Progress counts pixels finished (the sample counts of images may differ). Rank 0's
+// stderr is a pipe to mpirun: the line is drawn when mpirun's is a terminal.
 JobCoordinator::JobCoordinator(const CliOptions& opt, JobPlan plan, int ranks)
     : opt_(opt),
       plan_(std::move(plan)),
       films_(plan_.images.size()),
       busy_s_(ranks, 0.0),
       tasks_done_(ranks, 0),
-      progress_(Progress::wanted(opt.quiet), job_label(plan_, ranks), job_pixels(plan_)) {
+      progress_(Progress::wanted_mpi(opt.quiet), static_cast<int>(plan_.images.size()),
+                static_cast<int>(plan_.tasks.size()), job_pixels(plan_)) {
   for (size_t i = 0; i < plan_.images.size(); ++i) films_[i].rows_left = plan_.images[i].height;
 }
 
@@ -79,8 +76,12 @@ void JobCoordinator::complete(int rank, int32_t index, int spp, double busy_s,
   // Under a stop rule images are whole tasks, so one rank's count holds for every pixel.
   f.r.spp = spp;
   f.rows_left -= t.row_end - t.row_begin;
-  progress_.add(static_cast<uint64_t>(t.row_end - t.row_begin) * f.r.width, 0);
-  if (f.rows_left > 0) return;
+  f.busy_s += busy_s;
+  const uint64_t pixels = static_cast<uint64_t>(t.row_end - t.row_begin) * f.r.width;
+  if (f.rows_left > 0) {
+    progress_.task_done(pixels, false);
+    return;
+  }
   f.r.samples = static_cast<uint64_t>(f.r.accum.size()) * f.r.spp;
   for (const PixelAccum& a : f.r.accum) f.r.rays += a.rays;
   const PlannedImage& im = plan_.images[t.image];
@@ -88,7 +89,11 @@ void JobCoordinator::complete(int rank, int32_t index, int spp, double busy_s,
   write_outputs(opt_, opt_.scenes[im.scene], im.camera, im.desc, device_name_, f.r, im.path);
   write_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ++images_written_;
-  f.r = RenderResult();  // The image is on disk; its film is no longer needed.
+  progress_.clear();
+  print_wrote(opt_.quiet, im.path, f.r.spp, f.busy_s);
+  progress_.task_done(pixels, true);
+  f.r = RenderResult();  // The image is on disk; its film is no longer needed.  // The image is on
+                         // disk; its film is no longer needed.
 }
 
 void JobCoordinator::fail(int rank, const std::string& why) {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "app/cli.h"
-#include "distributed/job_plan.h"
 #include "app/progress.h"
+#include "distributed/job_plan.h"
 #include "integrator/render.h"
 
 namespace rt {
@@ -36,11 +36,14 @@ class JobCoordinator {
   void set_device_name(const std::string& name) { device_name_ = name; }
   // The progress line's last state; with --stats one line of the job's figures.
   void finish(double wall_s);
+  // Redraws the progress line now and then while tasks run (rank 0's loop calls it).
+  void tick() { progress_.tick(); }
 
  private:
   struct ImageFilm {
     RenderResult r;
     int rows_left = 0;
+    double busy_s = 0;  // The ranks' seconds on its tasks, for its "wrote" line.
   };
   ImageFilm& film(int32_t index);
 
@@ -54,7 +57,7 @@ class JobCoordinator {
   double recv_s_ = 0, write_s_ = 0;  // Rank 0's serial work: receiving bands, writing images.
   int images_written_ = 0;
   std::string failure_, device_name_;
-  Progress progress_;
+  JobProgress progress_;
 };
 
 }  // namespace rt

@@ -12,10 +12,11 @@
 #include <mutex>
 #include <thread>
 
+#include "app/progress.h"
+#include "app/render_job.h"
 #include "distributed/coordinator.h"
 #include "distributed/mpi_link.h"
 #include "distributed/tile_worker.h"
-#include "app/render_job.h"
 #include "util/parallel_for.h"
 
 namespace rt {
@@ -193,10 +194,13 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
   JobPlan plan;
   try {
     check_output_dir(opt);
+    // Listing the images loads every scene file: the terminal says so meanwhile.
+    show_status(Progress::wanted_mpi(opt.quiet), "loading the scene files to plan the job...");
     plan = plan_job(opt, place.ranks);
   } catch (const std::exception& e) {
     setup_error = e.what();
   }
+  clear_status(Progress::wanted_mpi(opt.quiet));
   JobCoordinator job(opt, std::move(plan), place.ranks);
   int running = place.ranks;  // Ranks not yet stopped, this one's worker included.
   std::unique_ptr<LocalWorker> local;
@@ -276,7 +280,10 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
         local.reset();
       }
     }
-    if (idle) std::this_thread::sleep_for(std::chrono::microseconds(500));
+    if (idle) {
+      job.tick();
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
   }
   job.finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (!setup_error.empty()) {

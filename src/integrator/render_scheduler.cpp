@@ -84,12 +84,38 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   std::vector<PixelAccum> accum;
+  // A device that counts rays only in the film (RenderDevice::render returns 0, as the
+  // OpenCL one) gets its rate from the film read once after the first pass, which is one
+  // sample of every pixel of the tile: its rays per pixel sample (the mean over the whole
+  // tile) then stand for the later samples, whose expected count is the same. --stats and
+  // the result count the film's rays exactly.
+  double rays_per_sample = -1;  // < 0: not measured yet (or the device counts them itself).
+  bool device_counts = false;
   for (std::vector<RenderWork> pass = scheduler.plan(); !pass.empty(); pass = scheduler.plan()) {
+    // The pass that measures the rate reports its samples with its rays, after the film
+    // is read, so no line shows its samples at a zero rate.
+    const bool measure = !device_counts && rays_per_sample < 0 && progress.enabled();
+    uint64_t pass_samples = 0, pass_rays = 0;
     for (const RenderWork& w : pass) {
       const auto t0 = Clock::now();
       const uint64_t rays = device.render(w);
       scheduler.record(w, since(t0));
-      progress.add(static_cast<uint64_t>(w.rows()) * cam.width * w.samples(), rays);
+      const uint64_t samples = static_cast<uint64_t>(w.rows()) * cam.width * w.samples();
+      pass_samples += samples;
+      pass_rays += rays;
+      if (measure) continue;
+      progress.add(samples, device_counts || rays_per_sample < 0
+                                ? rays
+                                : static_cast<uint64_t>(samples * rays_per_sample));
+    }
+    if (measure) {
+      device_counts = pass_rays > 0;
+      if (!device_counts) {
+        device.read_accum(&accum);
+        for (const PixelAccum& a : accum) pass_rays += a.rays;
+        rays_per_sample = static_cast<double>(pass_rays) / std::max<uint64_t>(pass_samples, 1);
+      }
+      progress.add(pass_samples, pass_rays);
     }
     if (cancel && cancel->load()) {
       if (cancelled) *cancelled = scheduler.samples_done() < cam.samples;
@@ -115,6 +141,7 @@ RenderResult render_camera(RenderDevice& device, const FlatScene& flat, const Ke
   const Camera& cam = flat.header.camera;
   DeviceLoadInfo info = device.load(flat, kernel);
   if (load_info) *load_info = info;
+  progress.begin();  // The line's elapsed time and rate are the sampling's, as --stats's.
   RenderResult r;
   r.width = cam.width;
   r.height = cam.height;

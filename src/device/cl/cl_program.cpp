@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "app/progress.h"
 #include "device/cl/cl_scene_buffers.h"
 #include "io/file_util.h"
 
@@ -100,6 +101,7 @@ cl::Program ClProgramCache::build(const std::string& source, const std::string& 
       try {
         cl::Program::Binaries binaries{binary};
         cl::Program p(context_, devices, binaries);
+        report_status("kernel from cache (" + name_ + ")");
         p.build(devices, options.c_str());
         *hit = true;
         return p;
@@ -108,6 +110,9 @@ cl::Program ClProgramCache::build(const std::string& source, const std::string& 
       }
     }
   }
+  // The compile takes seconds to a minute: the terminal says so rather than stay blank.
+  report_status(std::string("compiling the OpenCL kernel for this scene's features") +
+                (file.empty() ? "" : " (cached for later runs)") + "...");
   cl::Program p(context_, source);
   // PoCL's own kernel cache (~/.cache/pocl) is shared by every process; two processes that
   // compile the same kernel at once on a cold cache can race on its temporary files, and
