@@ -50,7 +50,7 @@
 
 #define RT_DEVICE inline
 // Inlined whatever the compiler's size heuristics say: the camera sample's path from its
-// ray to the traversal call (cl/film/film.h). As calls, each step handed the ray and the sample
+// ray to the traversal call (cl/integrator/pixel.h). As calls, each step handed the ray and the sample
 // on through stack copies of mismatched widths, and every such reload stalled on
 // store-to-load forwarding.
 #define RT_DEVICE_INLINE inline __attribute__((always_inline))

@@ -162,7 +162,7 @@ RT_DEVICE int CameraFilmDrawn(RT_PRIVATE const SceneData* sd) {
 #define RT_CAMERA_LENS_DRAWN(sd) RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)
 
 // The camera sample of key `key` (PixelSampleKeyOf) of a pixel, given its film and lens
-// positions in [0, 1)^2 (GeneratePixelSample; cl/film/film.h makes a batch's at once,
+// positions in [0, 1)^2 (GeneratePixelSample; cl/integrator/pixel.h makes a batch's at once,
 // CameraBatchPoints). `ray`: null, or sample `k` of a batch's rays (CameraBatchRays).
 RT_DEVICE_INLINE CameraSample CameraSampleOf(RT_PRIVATE const SceneData* sd,
                                              RT_PRIVATE const CameraPixel* cp, SampleKey key,

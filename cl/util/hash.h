@@ -87,7 +87,7 @@ RT_KERNEL_INLINE uint PermutationElement(uint i, uint n, uint key) {
 }
 
 // Elements first .. first + count - 1 (count <= RT_PERMUTATION_BATCH, first + count <= n) of
-// the permutation into out[]: the CPU reference's camera batch (cl/film/film.h). Four rounds of
+// the permutation into out[]: the CPU reference's camera batch (cl/integrator/pixel.h). Four rounds of
 // RT_PERMUTATION_BATCH elements run as one loop the compiler vectorizes, so no element waits
 // on a branch; the few still outside [0, n) after them (n = 9: 2 % of elements) walk on
 // alone. The same values as PermutationElement.
