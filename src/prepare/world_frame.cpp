@@ -84,7 +84,8 @@ void set_directional_distance(const std::vector<Aabb>& boxes, PageAlignedVector<
     diagonal += (double(world.hi[a]) - world.lo[a]) * (double(world.hi[a]) - world.lo[a]);
   float distance = static_cast<float>(std::max(1.0, 2.0 * std::sqrt(diagonal)));
   for (Light& l : lights)
-    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_ENVIRONMENT) l.param0 = distance;
+    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_ENVIRONMENT)
+      RT_LIGHT_REACH(&l) = distance;
 }
 
 // The position of a light stored in float by the loader, moved into the frame in double.
@@ -112,7 +113,7 @@ std::vector<Light> tagged_lights(const SceneDesc& scene, Vec3d origin) {
     l.edge2 = a.edge2;
     l.normal = a.normal;
     l.emission = a.radiance;
-    l.area = a.area;
+    RT_LIGHT_SURFACE_AREA(&l) = a.area;
     l.sample_index = sampled++;
     out.push_back(l);
   }
