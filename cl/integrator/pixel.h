@@ -10,15 +10,12 @@
 
 // A pixel's camera samples are made RT_CAMERA_BATCH at a time before any of them is traced.
 // Making one is a chain of dependent hashes, multiplies, divisions and a square root
-// (cl/camera/camera.h, cl/sampling/sampler.h), and no sample's chain needs another's result: made
-// together, the chains overlap in a CPU core's out-of-order window, where made each between two
-// traversals each chain's latency was paid in full (tap_0200 camera rays, 17 spp on one
-// thread: 105 to 91 ns per sample on the CPU reference). A GPU hides latency with other
-// work-items instead, and each sample held costs it registers: one at a time there. An
-// OpenCL device on a CPU (RT_CL_CPU_DEVICE, set by the host: PoCL) runs a work-item's
-// samples on one core as the reference does, and batches as it does (camera rays, PoCL,
-// bench/trace_bench.sh against batches of 1, paired: x1.05 on tap_0200, x1.07 on the 1 M
-// plane; up to x1.16 in other runs; batches of 2 and 4 measured the same as 8).
+// (cl/camera/camera.h, cl/sampling/sampler.h), and no sample's chain needs another's
+// result: made together, the chains overlap in a CPU core's out-of-order window, where made
+// each between two traversals each chain's latency is paid in full. A GPU hides latency
+// with other work-items instead, and each sample held costs it registers: one at a time
+// there. An OpenCL device on a CPU (RT_CL_CPU_DEVICE, set by the host: PoCL) runs a
+// work-item's samples on one core as the reference does, and batches as it does.
 #if defined(__OPENCL_C_VERSION__) && !defined(RT_CL_CPU_DEVICE)
 #define RT_CAMERA_BATCH 1
 #else
@@ -34,9 +31,8 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
   CameraPixel cp = MakeCameraPixel(sd, x, y);
 #if RT_CAMERA_BATCH > 1
   // The batch's film and lens strata are made at once (PermutationElements): one at a time,
-  // each sample's walk ended in a mispredicted branch about every other sample, and its
-  // division lay on the chain to the ray (tap_0200, 9 spp, one thread: ~5 % of the time per
-  // sample).
+  // each sample's walk ends in a branch mispredicted about every other sample, and its
+  // division lies on the chain to the ray.
   int film_strata = RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cp.key.strata > 1u;
   int lens_strata = RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cp.key.strata > 1u;
   uint stratum[RT_PERMUTATION_BATCH], lens_stratum[RT_PERMUTATION_BATCH];
