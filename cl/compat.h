@@ -9,7 +9,7 @@
 
 #define RT_DEVICE static inline
 // Inlined whatever the compiler's size heuristics say (see the C++ definition). PoCL's
-// compiler kept the camera's stratified sample out of line, a fifth of its render time.
+// compiler kept the camera's stratified sample out of line, a call on every sample.
 #define RT_DEVICE_INLINE static inline __attribute__((always_inline))
 // Inlined in the kernel only, where PoCL's inliner left a function out of line at a cost;
 // the CPU reference keeps GCC's own choice (its kernel is at GCC's inlining limits, and
@@ -20,8 +20,7 @@
 #define RT_KERNEL_UNROLL _Pragma("unroll")
 // A call of its own in the kernel on a CPU device (RT_CL_CPU_DEVICE, set by the host: PoCL),
 // whose compiler then optimizes the function apart from the large kernel function. A GPU's
-// compiler keeps its own choice (OpenCL compilers for GPUs inline nearly everything; a call
-// there was never measured).
+// compiler keeps its own choice (OpenCL compilers for GPUs inline nearly everything).
 #ifdef RT_CL_CPU_DEVICE
 #define RT_KERNEL_NOINLINE static __attribute__((noinline))
 #else
@@ -50,8 +49,8 @@
 
 #define RT_DEVICE inline
 // Inlined whatever the compiler's size heuristics say: the camera sample's path from its
-// ray to the traversal call (cl/film/film.h). As calls, each step handed the ray and the sample
-// on through stack copies of mismatched widths, and every such reload stalled on
+// ray to the traversal call (cl/integrator/pixel.h). As calls, each step handed the ray and the
+// sample on through stack copies of mismatched widths, and every such reload stalled on
 // store-to-load forwarding.
 #define RT_DEVICE_INLINE inline __attribute__((always_inline))
 // A plain inline function on the CPU (see the OpenCL definition).

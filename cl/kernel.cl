@@ -3,7 +3,7 @@
 // All of the maths lives in the shared headers; the scene's arrays are the list of
 // data_arrays.h, passed after the header in that order (src/device/cl/cl_scene_buffers.cpp binds them).
 #include "data_arrays.h"
-#include "film/film.h"
+#include "integrator/pixel.h"
 
 #define RT_KERNEL_PARAM(Type, name) __global const Type *name,
 #define RT_KERNEL_FILL(Type, name) sd.name = name;

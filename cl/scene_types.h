@@ -5,10 +5,10 @@
 #ifndef RT_SCENE_TYPES_H
 #define RT_SCENE_TYPES_H
 
+#include "bvh/simd.h"
 #include "compat.h"
 #include "data_arrays.h"
 #include "features.h"
-#include "bvh/simd.h"
 #include "texture/texture_types.h"
 
 // A material's parameters as the file gives them; cl/material/material.h evaluates them
@@ -31,8 +31,10 @@ typedef struct Material {
 } Material;
 
 // Every light of the scene in one array, tagged by `type` (an RT_LIGHT_* tag); each type
-// reads the members it documents and cl/light/ samples it. Point lights come first, then
-// area lights, so the direct light at a point is summed in the order it always was.
+// reads the members it documents and cl/light/ samples it. The host orders them point
+// lights, area lights, the directional, spot and environment lights in file order, then
+// the object lights (src/prepare/world_frame.cpp, flat_object_lights.cpp); direct lighting
+// sums in this order, which fixes the last bit of its result.
 typedef struct Light {
   float3 position;  // Point, spot: the light's position. Area: the parallelogram's corner.
   float3 edge1;     // Area: the points are position + s * edge1 + t * edge2, s, t in [0, 1).
@@ -43,30 +45,45 @@ typedef struct Light {
   // Point, spot: intensity (power per unit solid angle). Area, directional, mesh, sphere:
   // radiance.
   float3 emission;
-  float area;  // Area: |edge1 x edge2|. Mesh light: its world-space area.
-  // Type-specific scalars. Directional: param0, a length longer than the scene's
-  // bounding-box diagonal. Spot: param0 = cos(FalloffAngle / 2), inside which it is a point
-  // light; param1 = cos(CoverageAngle / 2), outside which it sends nothing. Sphere light:
-  // param0 = |det| of the instance's object-to-world transform (its volume scale).
-  // Environment: param0 as for directional lights; param1, param2 = the map's width and
-  // height (whole numbers); area = the integral its importance-sampling density was built
-  // from (0: the map is black and sends nothing).
-  float param0, param1, param2;
+  // The per-type parameters: each type's own meaning of these slots has a name below
+  // (RT_LIGHT_SURFACE_AREA and the others), by which both the host and the kernel reach it.
+  float scalar[4];
   // Keys the light's random numbers (cl/light/light.h); numbered within the lights that
   // draw any, so adding a light of another type does not change another light's samples.
   int sample_index;
   int type;
-  // Type-specific index (for example a texture or an emitting instance). Environment: its
-  // mapping, RT_ENV_LATLONG or RT_ENV_PROBE (cl/light/environment_map.h).
-  int index;
-  // Mesh light: its triangles are triangles[first .. first + count - 1], and
-  // light_cdf[cdf .. cdf + count - 1] their cumulative world-space areas over `area`.
-  int first;
-  int count;
-  int cdf;
-  int variant;  // Type-specific choice. Environment: how it is sampled (RT_ENV_SAMPLE_*).
-  int pad1;
+  int slot[6];  // Per-type indices, named below like `scalar`; the last is unused.
 } Light;
+
+// The per-type parameters of a Light, by name, for a pointer to it: valid as an lvalue in
+// C++ and in OpenCL C, so the host fills and the kernel reads the same names.
+// Area light: |edge1 x edge2|. Mesh light: its world-space area.
+#define RT_LIGHT_SURFACE_AREA(light) ((light)->scalar[0])
+// Directional and environment: the length of the shadow segment, longer than the scene's
+// bounding-box diagonal, so it leaves the scene from any point inside.
+#define RT_LIGHT_REACH(light) ((light)->scalar[1])
+// Mesh and sphere lights: the index of the emitting instance.
+#define RT_LIGHT_INSTANCE(light) ((light)->slot[0])
+// Spot: cos(FalloffAngle / 2), inside which it is a point light, and cos(CoverageAngle / 2),
+// outside which it sends nothing.
+#define RT_SPOT_COS_FALLOFF(light) ((light)->scalar[1])
+#define RT_SPOT_COS_COVERAGE(light) ((light)->scalar[2])
+// Sphere light: |det| of the instance's object-to-world transform (its volume scale).
+#define RT_SPHERE_VOLUME_SCALE(light) ((light)->scalar[1])
+// Mesh light: its triangles are triangles[first .. first + count - 1], and
+// light_cdf[cdf .. cdf + count - 1] their cumulative world-space areas over its area.
+#define RT_MESH_FIRST(light) ((light)->slot[1])
+#define RT_MESH_COUNT(light) ((light)->slot[2])
+#define RT_MESH_CDF(light) ((light)->slot[3])
+// Environment: the integral its importance-sampling density was built from (0: the map is
+// black and sends nothing); the map's width and height (whole numbers); its mapping,
+// RT_ENV_LATLONG or RT_ENV_PROBE (cl/light/environment_map.h); how it is sampled
+// (RT_ENV_SAMPLE_*).
+#define RT_ENV_INTEGRAL(light) ((light)->scalar[0])
+#define RT_ENV_WIDTH(light) ((light)->scalar[2])
+#define RT_ENV_HEIGHT(light) ((light)->scalar[3])
+#define RT_ENV_MAPPING(light) ((light)->slot[0])
+#define RT_ENV_SAMPLING(light) ((light)->slot[4])
 
 #define RT_LENS_SQUARE 0
 #define RT_LENS_DISK 1
@@ -171,14 +188,15 @@ typedef struct TriangleNormals {
 #define RT_FLAG_PATH_TRACING 16
 #define RT_FLAG_NEXT_EVENT 32           // NextEventEstimation: sample the lights at each bounce.
 #define RT_FLAG_IMPORTANCE_SAMPLING 64  // ImportanceSampling: cosine-weighted bounces.
-#define RT_FLAG_RUSSIAN_ROULETTE 128     // RussianRoulette: end paths by their throughput.
+#define RT_FLAG_RUSSIAN_ROULETTE 128    // RussianRoulette: end paths by their throughput.
 // --russian-roulette unbiased: a path the roulette ends drops its last vertex's light.
 #define RT_FLAG_UNBIASED_ROULETTE 256
 // --reflection-offset facing: a mirror or conductor seen from behind reflects from the side
 // the ray came from, not from the side of its normal as modelled (cl/material/mirror.h).
 #define RT_FLAG_FACING_REFLECTION 512
 // --ray-offset robust: spawned rays start the scene's epsilon plus a few ulps of the
-// surface's scale off it (cl/geometry/ray.h), not the scene's epsilon alone as the course's rays do.
+// surface's scale off it (cl/geometry/ray.h), not the scene's epsilon alone as the course's rays
+// do.
 #define RT_FLAG_ROBUST_OFFSET 1024
 #define RT_ROBUST_OFFSET(sd) (((sd)->header->flags & RT_FLAG_ROBUST_OFFSET) != 0)
 // Camera rays as the course's renderer computes them: in world space, in float

@@ -1,4 +1,4 @@
-// The CPU reference's camera batch (cl/film/film.h: PermutationElements, CameraBatchPoints,
+// The CPU reference's camera batch (cl/integrator/pixel.h: PermutationElements, CameraBatchPoints,
 // CameraBatchRays, CameraSampleOf) makes the same camera samples, to the bit, as
 // GeneratePixelSample, the one-at-a-time path of the OpenCL kernel: for square and
 // non-square sample counts, partial batches, the pinhole, the square and the disk lens, the

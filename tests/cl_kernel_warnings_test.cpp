@@ -1,6 +1,6 @@
 // The kernel compiles without a single warning on the OpenCL device, for the feature sets at
 // both ends (none compiled in, all compiled in), for a CPU device's and a GPU's code paths
-// (RT_CL_CPU_DEVICE, cl/film/film.h) and for both node widths. PoCL copies a build's warnings to
+// (RT_CL_CPU_DEVICE, cl/integrator/pixel.h) and for both node widths. PoCL copies a build's warnings to
 // stderr itself, where `--quiet` cannot stop them: a warning in the kernel is noise in every
 // user's terminal (the constant operand of && that cl/camera/camera_batch.h once had, with depth of
 // field compiled out, printed "1 warning generated." on each kernel compile).

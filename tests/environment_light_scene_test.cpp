@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "cl/light/environment_map.h"
-#include "util/errors.h"
-#include "prepare/flat_scene.h"
-#include "io/image_output.h"
 #include "integrator/render.h"
+#include "io/image_output.h"
+#include "prepare/flat_scene.h"
 #include "scene/scene.h"
 #include "support/device_harness.h"
+#include "util/errors.h"
 
 namespace fs = std::filesystem;
 
@@ -92,14 +92,15 @@ TEST(EnvironmentLightScene, ReadsMapMappingAndSampler) {
       <ImageId>1</ImageId><Sampler>cosine</Sampler></SphericalDirectionalLight>)")));
   ASSERT_EQ(s.lights.size(), 1u);
   EXPECT_EQ(s.lights[0].type, RT_LIGHT_ENVIRONMENT);
-  EXPECT_EQ(s.lights[0].index, RT_ENV_PROBE);
-  EXPECT_EQ(s.lights[0].variant, RT_ENV_SAMPLE_COSINE);
+  EXPECT_EQ(RT_ENV_MAPPING(&s.lights[0]), RT_ENV_PROBE);
+  EXPECT_EQ(RT_ENV_SAMPLING(&s.lights[0]), RT_ENV_SAMPLE_COSINE);
   EXPECT_EQ(s.environment_map.width, 8);
   EXPECT_EQ(s.environment_map.at(3, 2, 0), 4.0f);
   SceneDesc d = load_scene(Write(dir, Scene("<SphericalDirectionalLight id=\"1\"><ImageId>1"
                                             "</ImageId></SphericalDirectionalLight>")));
-  EXPECT_EQ(d.lights[0].index, RT_ENV_LATLONG);  // The specification's mapping by default.
-  EXPECT_EQ(d.lights[0].variant, RT_ENV_SAMPLE_IMPORTANCE);
+  EXPECT_EQ(RT_ENV_MAPPING(&d.lights[0]),
+            RT_ENV_LATLONG);  // The specification's mapping by default.
+  EXPECT_EQ(RT_ENV_SAMPLING(&d.lights[0]), RT_ENV_SAMPLE_IMPORTANCE);
   RenderOptions opt;
   FlatScene flat = prepare_scene(d, opt);
   prepare_camera(flat, d, 0, opt);

@@ -1,8 +1,8 @@
-// The environment light (cl/light/environment.h, environment_map.h, src/prepare/flat_environment.cpp)
-// against closed forms: the mappings of known directions to known texels, the importance
-// sampler against its density (chi-square), a constant environment over a diffuse floor,
-// one bright texel against a directional light of the same power, and the two devices
-// against each other.
+// The environment light (cl/light/environment.h, environment_map.h,
+// src/prepare/flat_environment.cpp) against closed forms: the mappings of known directions to known
+// texels, the importance sampler against its density (chi-square), a constant environment over a
+// diffuse floor, one bright texel against a directional light of the same power, and the two
+// devices against each other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,8 +13,8 @@
 
 #include "cl/light/light.h"
 #include "cl/material/brdf.h"
-#include "prepare/flat_scene.h"
 #include "integrator/render.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 
 namespace rt {
@@ -110,8 +110,8 @@ ImageF Map(int w, int h, float value) {
 Light Environment(int mapping, int sampler) {
   Light l{};
   l.type = RT_LIGHT_ENVIRONMENT;
-  l.index = mapping;
-  l.variant = sampler;
+  RT_ENV_MAPPING(&l) = mapping;
+  RT_ENV_SAMPLING(&l) = sampler;
   return l;
 }
 

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "cl/light/light.h"
-#include "prepare/flat_scene.h"
 #include "integrator/render.h"
+#include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 
 namespace rt {
@@ -19,7 +19,7 @@ Light Directional(float3 direction, float3 radiance, float distance) {
   l.type = RT_LIGHT_DIRECTIONAL;
   l.normal = direction;
   l.emission = radiance;
-  l.param0 = distance;
+  RT_LIGHT_REACH(&l) = distance;
   return l;
 }
 
@@ -30,8 +30,8 @@ Light Spot(float3 position, float3 axis, float intensity, double coverage, doubl
   l.position = position;
   l.normal = axis;
   l.emission = V(intensity, intensity, intensity);
-  l.param0 = static_cast<float>(std::cos(falloff * M_PI / 360));
-  l.param1 = static_cast<float>(std::cos(coverage * M_PI / 360));
+  RT_SPOT_COS_FALLOFF(&l) = static_cast<float>(std::cos(falloff * M_PI / 360));
+  RT_SPOT_COS_COVERAGE(&l) = static_cast<float>(std::cos(coverage * M_PI / 360));
   return l;
 }
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 
 #include "cl/light/light.h"
 #include "prepare/flat_scene.h"
@@ -16,6 +17,11 @@ namespace rt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// The named per-type parameters keep the layout both devices upload.
+static_assert(offsetof(Light, scalar) == 80 && offsetof(Light, sample_index) == 96 &&
+                  offsetof(Light, type) == 100 && offsetof(Light, slot) == 104,
+              "Light layout");
 
 float3 V(float x, float y, float z) { return make_float3(x, y, z); }
 
@@ -45,7 +51,7 @@ Light Square(float3 centre, float side, float3 radiance) {
   l.edge2 = V(0, side, 0);
   l.normal = V(0, 0, -1);
   l.emission = radiance;
-  l.area = side * side;
+  RT_LIGHT_SURFACE_AREA(&l) = side * side;
   return l;
 }
 
@@ -169,7 +175,7 @@ TEST(LightArray, FlattenTagsPointLightsFirstAndNumbersTheSampledOnes) {
   EXPECT_EQ(f.lights[1].type, RT_LIGHT_AREA);
   EXPECT_EQ(f.lights[1].sample_index, 0);
   EXPECT_EQ(f.lights[2].sample_index, 1);
-  EXPECT_EQ(f.lights[2].area, 1.0f);
+  EXPECT_EQ(RT_LIGHT_SURFACE_AREA(&f.lights[2]), 1.0f);
   EXPECT_EQ(f.header.features & (RT_LIGHT_POINT | RT_LIGHT_AREA), RT_LIGHT_POINT | RT_LIGHT_AREA);
 }
 

@@ -10,9 +10,9 @@
 #include <string>
 
 #include "cl/material/brdf.h"
-#include "util/errors.h"
 #include "scene/scene.h"
 #include "support/test_scene.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {
@@ -146,8 +146,10 @@ TEST(LoaderHw56, DirectionalAndSpotLights) {
   EXPECT_EQ(s.lights[1].type, RT_LIGHT_SPOT);
   EXPECT_EQ(s.lights[1].position.z, 3.0f);
   EXPECT_EQ(s.lights[1].normal.y, -1.0f);
-  EXPECT_FLOAT_EQ(s.lights[1].param0, std::cos(30 * M_PI / 180));  // Half the fall-off.
-  EXPECT_FLOAT_EQ(s.lights[1].param1, std::cos(45 * M_PI / 180));  // Half the coverage.
+  EXPECT_FLOAT_EQ(RT_SPOT_COS_FALLOFF(&s.lights[1]),
+                  std::cos(30 * M_PI / 180));  // Half the fall-off.
+  EXPECT_FLOAT_EQ(RT_SPOT_COS_COVERAGE(&s.lights[1]),
+                  std::cos(45 * M_PI / 180));  // Half the coverage.
 }
 
 TEST(LoaderHw56, LightErrors) {

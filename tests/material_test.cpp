@@ -1,4 +1,5 @@
-// Tests for the material dispatch (cl/material/material.h): what Scatter pushes for each
+// Tests for the material dispatch (cl/material/material.h): what the ray tree's Scatter
+// (cl/integrator/ray_tree.h) pushes for each
 // material type (direction, weight, medium, key, depth, side of the surface), against
 // reflection, Snell's law and the Fresnel terms in closed form.
 //
@@ -8,7 +9,7 @@
 
 #include <cmath>
 
-#include "cl/material/material.h"
+#include "cl/integrator/ray_tree.h"
 
 namespace rt {
 namespace {

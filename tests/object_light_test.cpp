@@ -14,10 +14,10 @@
 #include "cl/light/emission.h"
 #include "cl/light/light.h"
 #include "cl/util/hash.h"
-#include "util/errors.h"
 #include "prepare/flat_scene.h"
 #include "support/device_harness.h"
 #include "support/test_scene.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {
@@ -124,18 +124,18 @@ TEST(ObjectLightLoader, MeshAndSphereAreGeometryAndLights) {
   EXPECT_TRUE(f.flat.header.features & RT_FEATURE_SPHERE_LIGHTS);
   const Light& mesh = FirstObjectLight(f);
   EXPECT_EQ(mesh.type, RT_LIGHT_MESH);
-  EXPECT_FLOAT_EQ(mesh.area, 4.0f);
+  EXPECT_FLOAT_EQ(RT_LIGHT_SURFACE_AREA(&mesh), 4.0f);
   EXPECT_EQ(mesh.count, 2);
-  EXPECT_EQ(f.flat.light_cdf[mesh.cdf + 1], 1.0f);
-  EXPECT_FLOAT_EQ(f.flat.light_cdf[mesh.cdf], 0.5f);
+  EXPECT_EQ(f.flat.light_cdf[RT_MESH_CDF(&mesh) + 1], 1.0f);
+  EXPECT_FLOAT_EQ(f.flat.light_cdf[RT_MESH_CDF(&mesh)], 0.5f);
   // Each instance names its light back.
   for (size_t i = 0; i < f.flat.instances.size(); ++i) {
     int l = f.flat.instance_lights[i];
     ASSERT_GE(l, 0);
-    EXPECT_EQ(f.flat.lights[l].index, static_cast<int>(i));
+    EXPECT_EQ(RT_LIGHT_INSTANCE(&f.flat.lights[l]), static_cast<int>(i));
   }
   // |det| of the sphere's transform: radius^3.
-  EXPECT_FLOAT_EQ(f.flat.lights[1].param0, 0.125f);
+  EXPECT_FLOAT_EQ(RT_SPHERE_VOLUME_SCALE(&f.flat.lights[1]), 0.125f);
 }
 
 TEST(ObjectLightLoader, BadInputIsOneClearLine) {
@@ -222,7 +222,7 @@ TEST(SphereLight, EllipsoidDensityAgainstBruteForce) {
   Flat f = Load(Scene(Ball(0.5, "<Transformations>s1</Transformations>"), "0 0 5",
                       "<Scaling id=\"1\">3 1 0.5</Scaling>"));
   const Light& light = FirstObjectLight(f);
-  const Instance& inst = f.flat.instances[light.index];
+  const Instance& inst = f.flat.instances[RT_LIGHT_INSTANCE(&light)];
   float3 p = make_float3(0.7f, 1.1f, 1.3f);
   double sum = 0, sum2 = 0, hits = 0, e_sum = 0, e_sum2 = 0;
   const int n = 400000;

@@ -33,8 +33,8 @@ void AddSky(rt::SceneDesc* s, int sampler) {
   s->environment_map.pixels.assign(8 * 4 * 3, kSky);
   Light l{};
   l.type = RT_LIGHT_ENVIRONMENT;
-  l.index = RT_ENV_LATLONG;
-  l.variant = sampler;
+  RT_ENV_MAPPING(&l) = RT_ENV_LATLONG;
+  RT_ENV_SAMPLING(&l) = sampler;
   s->lights.push_back(l);
 }
 

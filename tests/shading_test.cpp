@@ -251,35 +251,39 @@ TEST(ShadingRefract, StraightThroughAtNormalIncidence) {
 // BeerLambert
 // ------------------------------------------------------------------------------------------
 
+// Both exponentials: the library's (the ray tree's) and the portable one (the path's).
 TEST(ShadingBeerLambert, ZeroDistanceAndZeroAbsorptionAttenuateNothing) {
-  float3 one = BeerLambert(V(0.5f, 3.0f, 100.0f), 0.0f);
-  EXPECT_EQ(one.x, 1.0f);
-  EXPECT_EQ(one.y, 1.0f);
-  EXPECT_EQ(one.z, 1.0f);
-  float3 clear = BeerLambert(V(0, 0, 0), 123.0f);
-  EXPECT_EQ(clear.x, 1.0f);
-  EXPECT_EQ(clear.y, 1.0f);
-  EXPECT_EQ(clear.z, 1.0f);
+  for (int portable : {0, 1}) {
+    float3 one = BeerLambert(V(0.5f, 3.0f, 100.0f), 0.0f, portable);
+    EXPECT_EQ(one.x, 1.0f);
+    EXPECT_EQ(one.y, 1.0f);
+    EXPECT_EQ(one.z, 1.0f);
+    float3 clear = BeerLambert(V(0, 0, 0), 123.0f, portable);
+    EXPECT_EQ(clear.x, 1.0f);
+    EXPECT_EQ(clear.y, 1.0f);
+    EXPECT_EQ(clear.z, 1.0f);
+  }
 }
 
 TEST(ShadingBeerLambert, MatchesExpPerChannel) {
   const float3 cs[] = {V(0.1f, 1.0f, 5.0f), V(0.01f, 0.25f, 2.5f), V(3.0f, 0.0f, 0.7f)};
-  for (float3 c : cs)
-    for (float d : {0.001f, 0.3f, 1.0f, 2.75f, 10.0f}) {
-      float3 a = BeerLambert(c, d);
-      const float ch[3] = {c.x, c.y, c.z}, got[3] = {a.x, a.y, a.z};
-      for (int k = 0; k < 3; ++k) {
-        double x = -double(ch[k]) * d;
-        double expect = std::exp(x);
-        // One rounding of c * d (relative 2^-24 of x, scaled by |x| through exp) plus the
-        // float exp's own error and the final rounding: a couple of ulps.
-        double tol = expect * (std::fabs(x) * 6e-8 + 2.4e-7);
-        EXPECT_NEAR(got[k], expect, tol) << "c " << ch[k] << " d " << d;
+  for (int portable : {0, 1})
+    for (float3 c : cs)
+      for (float d : {0.001f, 0.3f, 1.0f, 2.75f, 10.0f}) {
+        float3 a = BeerLambert(c, d, portable);
+        const float ch[3] = {c.x, c.y, c.z}, got[3] = {a.x, a.y, a.z};
+        for (int k = 0; k < 3; ++k) {
+          double x = -double(ch[k]) * d;
+          double expect = std::exp(x);
+          // One rounding of c * d (relative 2^-24 of x, scaled by |x| through exp) plus the
+          // float exp's own error and the final rounding: a couple of ulps.
+          double tol = expect * (std::fabs(x) * 6e-8 + 2.4e-7);
+          EXPECT_NEAR(got[k], expect, tol) << "c " << ch[k] << " d " << d;
+        }
       }
-    }
   // Attenuation over a + b is the product of the attenuations.
   float3 c = V(0.3f, 1.1f, 2.0f);
-  float3 ab = BeerLambert(c, 1.5f), a = BeerLambert(c, 0.5f), b = BeerLambert(c, 1.0f);
+  float3 ab = BeerLambert(c, 1.5f, 0), a = BeerLambert(c, 0.5f, 0), b = BeerLambert(c, 1.0f, 0);
   EXPECT_NEAR(ab.x, a.x * b.x, 1e-6);
   EXPECT_NEAR(ab.y, a.y * b.y, 1e-6);
   EXPECT_NEAR(ab.z, a.z * b.z, 1e-6);

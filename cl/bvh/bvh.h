@@ -239,11 +239,10 @@ RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
       // The kernel has this path only for a scene with such meshes (RT_COMPILED; the CPU
       // reference always has it). Inlined, the direction part of MakeTriangleRay depends on
       // the ray alone, and PoCL's compiler (LLVM's loop-invariant code motion) moves its
-      // divisions to the start of every traversal: metal_glass_plates, whose meshes are all
-      // rotated or scaled, paid them on every ray, shadow rays included (6 % of its CPU
-      // time). Where such meshes exist, almost every ray does that work anyway, and moved it
-      // costs less than in a call that cannot be moved (tap_0200's camera rays on PoCL: 4 %).
-      // GCC moves nothing there.
+      // divisions to the start of every traversal, so a scene whose meshes are all rotated
+      // or scaled (hw3's metal_glass_plates) would pay them on every ray, shadow rays
+      // included. Where such meshes exist, almost every ray does that work anyway, and moved
+      // it costs less than a call that cannot be moved. GCC moves nothing there.
       int world_direction = RT_COMPILED(RT_FEATURE_WORLD_MESHES) &&
                             (!transformed || (translated && translation_keeps_direction));
       if (RT_HAS(sd, RT_FEATURE_SPHERES) && inst->kind == RT_INSTANCE_SPHERE) {

@@ -11,9 +11,10 @@
 
 #include "../compat.h"
 
-// Children per BVH node. The CPU reference is compiled for 4, which beats 8 with GCC; the
-// host picks the width per device (RenderDevice::bvh_width: 8 for PoCL on a CPU, which
-// traverses it faster) and passes it to the kernel's build (docs/figures_history.md).
+// Children per BVH node. The CPU reference is compiled for 4, whose node test fits GCC's
+// 128-bit lanes; the host picks the width per device (RenderDevice::bvh_width: 8 for PoCL
+// on a CPU, whose compiler vectorizes the wider node test to 256 bits) and passes it to
+// the kernel's build.
 #ifndef RT_BVH_WIDTH
 #define RT_BVH_WIDTH 4
 #endif

@@ -34,8 +34,8 @@ RT_DEVICE real2 CourseFilmPixelSize(RT_GLOBAL const Camera* cam) {
 // film point s = q + su u - sv v and s - e are formed in world space, in float, so their
 // rounding (up to 1e-3 pixel for a camera 30 units from the origin) is the course's. On
 // steep gradients, the silhouettes of smooth meshes and shadow terminators, that decides
-// the 8-bit value: hw1 windmill_smooth has 1,290 pixels off the course's image with exact
-// rays and 212 with these (README, "Figures"). Each operation and its order is the one that
+// the 8-bit value: hw1 windmill_smooth has several times fewer pixels off the course's
+// image with these rays than with exact ones. Each operation and its order is the one that
 // matched (su from the pixel width, s summed left to right, d divided by its length).
 // `pixel_size` is CourseFilmPixelSize(cam).
 // CourseFilmAxis is one axis of s - e, so the CPU reference's camera batch
@@ -162,7 +162,7 @@ RT_DEVICE int CameraFilmDrawn(RT_PRIVATE const SceneData* sd) {
 #define RT_CAMERA_LENS_DRAWN(sd) RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD)
 
 // The camera sample of key `key` (PixelSampleKeyOf) of a pixel, given its film and lens
-// positions in [0, 1)^2 (GeneratePixelSample; cl/film/film.h makes a batch's at once,
+// positions in [0, 1)^2 (GeneratePixelSample; cl/integrator/pixel.h makes a batch's at once,
 // CameraBatchPoints). `ray`: null, or sample `k` of a batch's rays (CameraBatchRays).
 RT_DEVICE_INLINE CameraSample CameraSampleOf(RT_PRIVATE const SceneData* sd,
                                              RT_PRIVATE const CameraPixel* cp, SampleKey key,

@@ -1,4 +1,4 @@
-// The camera batch of a CPU device, the reference's or an OpenCL CPU device's (cl/film/film.h,
+// The camera batch of a CPU device, the reference's or an OpenCL CPU device's (cl/integrator/pixel.h,
 // RT_CAMERA_BATCH): the keys, film and lens positions and course-camera rays of
 // RT_PERMUTATION_BATCH samples of a pixel, made as loops over the batch that GCC makes
 // eight lanes wide (PoCL keeps them scalar; the batch still overlaps the samples' chains). Each
@@ -120,7 +120,7 @@ RT_DEVICE_INLINE void BatchStratumPoints(PixelKey p, RT_PRIVATE const uint* stra
 
 // The prefixes and film and lens positions of samples first .. first + B - 1 of the pixel
 // (B = RT_PERMUTATION_BATCH), as GeneratePixelSample makes them, for a CPU device's
-// camera batch (cl/film/film.h): prefix[k], film (point[k], point[B + k]), lens (point[2B + k],
+// camera batch (cl/integrator/pixel.h): prefix[k], film (point[k], point[B + k]), lens (point[2B + k],
 // point[3B + k]); film_stratum and lens_stratum as PermutationElements makes them. A
 // sample's prefix and jitters are seven hash rounds, one sample's a chain of scalar
 // multiplies and shifts: as loops over the batch, the compiler makes each eight lanes wide.

@@ -32,7 +32,7 @@ RT_DEVICE real3 RayAt(Ray r, real t) { return r.origin + r.direction * t; }
 // The origin of a ray leaving surface point p on the side that unit normal n points to.
 // By default (robust == 0) it is the scene's own epsilon along n and nothing more, as the
 // course's renderer offsets its rays: its images keep shadow and reflection edges where
-// that offset puts them (README "Figures": hw1 spheres_mirror, hw2 grass_desert). robust
+// that offset puts them (hw1 spheres_mirror, hw2 grass_desert match them so). robust
 // adds 8 float ulps of `scale`, the largest coordinate magnitude p was computed from (its
 // triangle's vertices or its sphere, in world space; at least |p|): the rounding error of
 // p, and of the next intersection test near it, is a few ulps of that magnitude whatever

@@ -4,8 +4,8 @@
 
 #include "../bvh/bvh.h"
 #include "../features.h"
-#include "ray.h"
 #include "../scene_types.h"
+#include "ray.h"
 #include "transform.h"
 
 // The shading context of a hit (pbrt-v4's SurfaceInteraction): what lights, materials and
@@ -120,7 +120,7 @@ RT_DEVICE SurfacePoint ComputeSurfaceParts(RT_PRIVATE const SceneData* sd,
   }
   // The normals are formed in locals and stored once: copying sp.ng to sp.n through the
   // returned record loaded 16 bytes just stored as three floats, a load that waits for the
-  // stores to retire (failed store-to-load forwarding, a tenth of this function's time).
+  // stores to retire (failed store-to-load forwarding).
   real3 ng = Vec3(0.0f), n = Vec3(0.0f), wo = Vec3(0.0f);
   int front = 0;
   if (want_normals) {

@@ -4,9 +4,9 @@
 #define RT_INTEGRATOR_DIRECT_LIGHTING_H
 
 #include "../bvh/intersect.h"
+#include "../geometry/surface.h"
 #include "../light/light.h"
 #include "../material/material.h"
-#include "../geometry/surface.h"
 
 // 1 when nothing lies between origin and origin + segment (exclusive).
 RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, real3 origin, real3 segment, real time,
@@ -24,7 +24,7 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
   // The course's renderer offsets the shadow ray along the shading normal (on a smooth mesh
   // the interpolated one): near a terminator the origin can fall behind the triangle, which
   // shadows the point, and in a crease it can clear a neighbouring triangle, which lights it;
-  // its images show both (README, "Figures"). --shadow-offset geometric uses the triangle's.
+  // its images show both. --shadow-offset geometric uses the triangle's.
   real3 along = (sd->header->flags & RT_FLAG_GEOMETRIC_OFFSET) != 0 ? s->ng : s->n;
   real3 origin =
       OffsetRayOrigin(s->p, along, sd->header->shadow_epsilon, s->scale, RT_ROBUST_OFFSET(sd));
@@ -32,8 +32,8 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
   return EvaluateBsdf(sd, m, s->n, s->wo, ls.wi, ls.irradiance);
 }
 
-// l plus one sample of every light, summed in the lights' array order (point lights, then
-// area lights), which fixes the last bit of the result. `rs` draws the area lights'
+// l plus one sample of every light, summed in the lights' array order (cl/scene_types.h,
+// Light), which fixes the last bit of the result. `rs` draws the area lights'
 // samples; it comes by pointer, as to RaySample2D (a by-value copy, stored field by field by
 // the caller and reloaded in 16-byte halves here, stalled on store-to-load forwarding). The
 // path tracer's next-event estimation is this sum.

@@ -5,12 +5,12 @@
 #ifndef RT_INTEGRATOR_H
 #define RT_INTEGRATOR_H
 
+#include "../bvh/intersect.h"
 #include "../camera/camera.h"
 #include "../film/film_types.h"
-#include "../bvh/intersect.h"
+#include "../geometry/surface.h"
 #include "../light/emission.h"
 #include "../material/material.h"
-#include "../geometry/surface.h"
 #include "direct_lighting.h"
 #include "escaped.h"
 #include "path.h"
@@ -52,7 +52,7 @@ RT_DEVICE_INLINE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Camer
     // The camera ray is read from the sample rather than from the task just built from it:
     // the task's copy was stored a few instructions earlier by stores narrower than the
     // loads that pass it on, and such a load waits for those stores to retire (failed
-    // store-to-load forwarding, 12 % of the camera-ray path's time outside traversal).
+    // store-to-load forwarding).
     if (!IntersectClosest(sd, task.depth == 0 ? cs->ray : task.ray, cull, &hit)) {
       if (EscapedRaySees(sd, task.depth))
         radiance += task.weight * EscapedRadiance(sd, task.ray.direction, pixel_uv);
@@ -61,7 +61,7 @@ RT_DEVICE_INLINE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Camer
     int record = info != 0 && task.depth == 0;
     int parts = SurfacePartsRead(sd, &task, max_depth, hit, record);
     if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && task.inside)
-      task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction));
+      task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction), 0);
     if (parts == 0) {
       // A last hit lit by the ambient term alone (SurfacePartsRead), as DirectLighting would
       // light it: neither the surface point nor a copy of the material is made.

@@ -3,8 +3,10 @@
 // conventions the course's reference images show (docs/path_tracing.md has the evidence).
 //
 // A camera sample follows one path in a loop (no recursion in OpenCL C) with its weight.
-// At each vertex it adds what the surface emits, then, with NextEventEstimation, one sample
-// of every light through the reflection model, and continues along the material's lobes:
+// Each vertex takes four steps, as Cycles' integrate_surface: emission (what the surface
+// emits), light samples (with NextEventEstimation, one sample of every light through the
+// reflection model), survival (the bound on bounces, or Russian roulette) and continuation
+// along the material's lobes:
 // one direction of the reflection model (uniform over the hemisphere, or shaped by the
 // BRDF with ImportanceSampling), the delta lobes of mirrors, conductors and dielectrics.
 // Like the course's recursive renderer, a path splits where a material has more than one
@@ -26,11 +28,12 @@
 #ifndef RT_INTEGRATOR_PATH_H
 #define RT_INTEGRATOR_PATH_H
 
-#include "../camera/camera.h"
 #include "../bvh/intersect.h"
+#include "../camera/camera.h"
+#include "../geometry/surface.h"
 #include "../light/emission.h"
 #include "../material/material.h"
-#include "../geometry/surface.h"
+#include "../sampling/dimensions.h"
 #include "direct_lighting.h"
 #include "escaped.h"
 #include "primary_info.h"
@@ -48,10 +51,6 @@
 #else
 #define RT_PATH_STACK 8
 #endif
-
-// Keys of the next vertex's random dimensions, one per lobe taken, so no two vertices of
-// a path tree draw the same numbers.
-#define RT_PATH_NEXT_VERTEX 0x70617468u
 
 // One path of the tree, from the vertex its ray will hit.
 typedef struct PathState {
@@ -75,7 +74,8 @@ RT_DEVICE real3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
 }
 
 // Russian roulette: the path goes on with probability q = the largest component of
-// `throughput` (at most 1) and is then divided by q.
+// `throughput` (at most 1); a survivor's weight is then divided by q, and *survival
+// receives 1 / q (it keeps 1 where no roulette is played or the path ends).
 //
 // The course's roulette, as its reference images show it (docs/path_tracing.md: the
 // quantized values of glass_importance_russian.exr give it away), is played at a hit
@@ -88,11 +88,11 @@ RT_DEVICE real3 SurfaceEmission(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
 // --russian-roulette unbiased plays pbrt-v4's: after the hit's light is added, with the
 // path's weight as throughput, so the expectation is unchanged and paths of low weight end
 // early.
-RT_DEVICE int RouletteSurvives(RT_PRIVATE PathState* p, real3 throughput, RaySampler rs) {
+RT_DEVICE int RouletteSurvives(real3 throughput, RaySampler rs, RT_PRIVATE real* survival) {
   real q = fmin(RT_R(1.0), MaxComponent(throughput));
   if (q >= 1.0f) return 1;
   if (!(q > 0.0f) || RaySample1D(&rs, RT_DIM_RUSSIAN_ROULETTE) >= q) return 0;
-  p->weight = p->weight * (1.0f / q);
+  *survival = 1.0f / q;
   return 1;
 }
 
@@ -112,6 +112,38 @@ RT_DEVICE PathState BranchPath(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
     c.medium = s->front ? ToReal3(m->absorption) : Vec3(0.0f);
   }
   return c;
+}
+
+// The radiance an escaping path sees. With next-event estimation the environment light
+// was sampled at the hit before, unless the path left by a delta lobe (as for emission at
+// hits).
+RT_DEVICE real3 PathEscapedRadiance(RT_PRIVATE const SceneData* sd, RT_PRIVATE const PathState* p,
+                                    real2 pixel_uv, int nee) {
+  int sampled =
+      nee && !p->specular && RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && sd->header->environment >= 0;
+  if (!EscapedRaySees(sd, p->bounce) || sampled) return Vec3(0.0f);
+  return p->weight * EscapedRadiance(sd, p->ray.direction, pixel_uv);
+}
+
+// Continuation: replaces *p by the path along one lobe of the material at s and pushes the
+// other lobes' branches; returns whether *p goes on. The path splits into every lobe while
+// the stack has room for the extra branches, else follows one lobe, chosen at random.
+RT_KERNEL_INLINE int ContinuePath(RT_PRIVATE const SceneData* sd, RT_PRIVATE PathState* p,
+                                  RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const Material* m,
+                                  RaySampler rs, int importance, RT_PRIVATE PathState* stack,
+                                  RT_PRIVATE int* pending) {
+  BsdfSample lobes[RT_LOBE_COUNT];
+  int n = 0;
+  if (RT_PATH_STACK > 1 && HasSpecularLobe(sd, m))
+    n = SampleBsdfLobes(sd, m, s, rs, importance, lobes);
+  if (n == 0 || *pending + n - 1 > RT_PATH_STACK) {
+    lobes[0] = SampleBsdf(sd, m, s, rs, importance);
+    n = lobes[0].valid;
+  }
+  for (int l = 1; l < n; ++l) stack[(*pending)++] = BranchPath(sd, p, s, m, lobes[l]);
+  if (!(n > 0 && MaxComponent(lobes[0].weight) > 0.0f)) return 0;
+  *p = BranchPath(sd, p, s, m, lobes[0]);
+  return 1;
 }
 
 RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_ray, real2 pixel_uv,
@@ -140,55 +172,40 @@ RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_
     Hit hit;
     *rays += 1u;
     int cull = (flags & RT_FLAG_CULL_BACK_FACES) != 0 && p.bounce == 0;
-    int alive = IntersectClosest(sd, p.ray, cull, &hit);
-    if (!alive) {
-      // With next-event estimation the environment light was sampled at the hit before,
-      // unless the path left by a delta lobe (as for emission at hits).
-      int sampled = nee && !p.specular && RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && h->environment >= 0;
-      if (EscapedRaySees(sd, p.bounce) && !sampled)
-        radiance += p.weight * EscapedRadiance(sd, p.ray.direction, pixel_uv);
+    int continues = 0;  // Whether p goes on from this hit.
+    if (!IntersectClosest(sd, p.ray, cull, &hit)) {
+      radiance += PathEscapedRadiance(sd, &p, pixel_uv, nee);
     } else {
       SurfacePoint s = ComputeSurface(sd, p.ray, hit);
       if (p.bounce == 0) RecordPrimaryHit(info, hit, s.n);
       if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && p.inside)
-        p.weight = p.weight * BeerLambertPortable(p.medium, hit.t * Length(p.ray.direction));
+        p.weight = p.weight * BeerLambert(p.medium, hit.t * Length(p.ray.direction), 1);
       Material m = EvaluateMaterial(sd, &s);
-      // The light this hit adds: emission, then light samples.
+      // Emission: what the surface sends along the path, where light sampling did not count
+      // it already; a replace_all texture shows its colour, unshaded, and ends the path.
       real3 found = (!nee || p.specular) ? SurfaceEmission(sd, &s) : Vec3(0.0f);
-      if (RT_HAS(sd, RT_FEATURE_TEXTURES) && m.unlit) {
-        found = found + ToReal3(m.diffuse);  // A replace_all texture shows its colour, unshaded.
-        alive = 0;
-      }
+      int unlit = RT_HAS(sd, RT_FEATURE_TEXTURES) && m.unlit;
+      if (unlit) found = found + ToReal3(m.diffuse);
       // Unlike the ray tree's direct lighting, the path sees every surface from the side it
       // arrives on, so light samples and continuations agree on which side is lit.
       FaceForward(&s);
       RaySampler rs = MakeRaySampler(sk, p.key, p.bounce == 0);
-      if (alive && nee && ReflectionShare(sd, &m, &s) > 0.0f)
+      // Light samples: next-event estimation through the reflection model.
+      if (!unlit && nee && ReflectionShare(sd, &m, &s) > 0.0f)
         found = AddLightSamples(sd, &s, &m, &rs, found, rays);
-      alive = alive && p.bounce < max_bounces;
-      if (alive && course_roulette) alive = RouletteSurvives(&p, p.roulette, rs);
+      // Survival: the bound on bounces, then the roulette, played once; the course's divides
+      // this hit's light by its probability too, pbrt-v4's only what the path finds later.
+      real survival = 1.0f;
+      continues = !unlit && p.bounce < max_bounces;
+      if (continues && roulette)
+        continues = RouletteSurvives(course_roulette ? p.roulette : p.weight, rs, &survival);
+      if (course_roulette) p.weight = p.weight * survival;
       radiance += p.weight * found;
-      if (alive && roulette && !course_roulette) alive = RouletteSurvives(&p, p.weight, rs);
-      if (alive) {
-        // Split into every lobe while the stack has room for the extra branches; else
-        // follow one lobe, chosen at random.
-        BsdfSample lobes[RT_LOBE_COUNT];
-        int n = 0;
-        if (RT_PATH_STACK > 1 && HasSpecularLobe(sd, &m))
-          for (int l = 0; l < RT_LOBE_COUNT; ++l) {
-            lobes[n] = SampleBsdfLobe(sd, &m, &s, rs, importance, l);
-            n += lobes[n].valid;
-          }
-        if (n == 0 || pending + n - 1 > RT_PATH_STACK) {
-          lobes[0] = SampleBsdf(sd, &m, &s, rs, importance);
-          n = lobes[0].valid;
-        }
-        for (int l = 1; l < n; ++l) stack[pending++] = BranchPath(sd, &p, &s, &m, lobes[l]);
-        alive = n > 0 && MaxComponent(lobes[0].weight) > 0.0f;
-        if (alive) p = BranchPath(sd, &p, &s, &m, lobes[0]);
-      }
+      if (roulette && !course_roulette) p.weight = p.weight * survival;
+      // Continuation along the material's lobes.
+      if (continues) continues = ContinuePath(sd, &p, &s, &m, rs, importance, stack, &pending);
     }
-    if (alive) continue;
+    if (continues) continue;
     if (pending == 0) break;
     p = stack[--pending];
   }

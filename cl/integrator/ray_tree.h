@@ -1,11 +1,15 @@
 // The ray tree of one camera sample as an explicit, bounded stack of weighted rays (no
 // recursion in OpenCL C): the radiance of the sample is the sum over the tree of
-// weight * the light each ray finds. Scattering pushes children; Li pops them.
+// weight * the light each ray finds. Scatter pushes a ray's children, one per delta lobe
+// of the material it hits; Li pops them.
 #ifndef RT_INTEGRATOR_RAY_TREE_H
 #define RT_INTEGRATOR_RAY_TREE_H
 
 #include "../features.h"
 #include "../geometry/ray.h"
+#include "../geometry/surface.h"
+#include "../material/material.h"
+#include "../sampling/dimensions.h"
 #include "../scene_types.h"
 #include "../util/hash.h"
 
@@ -17,11 +21,6 @@
 #else
 #define RT_TASK_STACK (RT_MAX_DEPTH + 2)
 #endif
-
-// Children's keys: HashCombine(parent key, child). Every random number a ray draws is keyed
-// by its own key, so the tree's samples never collide.
-#define RT_CHILD_REFLECTED 1u
-#define RT_CHILD_REFRACTED 2u
 
 typedef struct RayTask {
   Ray ray;
@@ -66,6 +65,45 @@ RT_DEVICE int NextRay(RT_PRIVATE RayStack* stack, RT_PRIVATE RayTask* task) {
   if (stack->size == 0) return 0;
   *task = PopRay(stack);
   return 1;
+}
+
+// Whether the reflected ray of an opaque surface at s (normals facing the incoming ray)
+// leaves from below the surface. The course's renderer offsets it along the normal as
+// modelled, also on a surface seen from behind: there the ray starts behind the sheet and
+// meets it again from the front, and that hit's reflection continues the incoming ray
+// beyond the sheet. hw2 grass_desert's blades are mirrors seen from both sides, and its
+// reference image shows them so. --reflection-offset facing keeps the ray on the viewer's
+// side.
+RT_DEVICE int ReflectionLeavesBelow(RT_PRIVATE const SceneData* sd,
+                                    RT_PRIVATE const SurfacePoint* s) {
+  return !s->front && (sd->header->flags & RT_FLAG_FACING_REFLECTION) == 0;
+}
+
+// Pushes a child of `task` for every delta lobe of the material at s (facing the incoming
+// ray), reflection before refraction, so the refracted ray is followed first. A refracted
+// ray enters (or leaves) the dielectric's medium; a dielectric's reflected ray stays on
+// the side it came from, an opaque surface's leaves the medium's bookkeeping as it was.
+RT_DEVICE void Scatter(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                       RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
+                       RaySampler rs, RT_PRIVATE RayStack* stack) {
+  BsdfSample lobes[RT_DELTA_LOBES];
+  int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0;
+  int n = SampleDeltaLobes(sd, m, s, rs, choose, lobes);
+  int transmissive = IsTransmissive(sd, m);
+  for (int l = 0; l < n; ++l) {
+    RT_PRIVATE const BsdfSample* bs = &lobes[l];
+    int below = 1, inside = s->front;
+    uint child = RT_CHILD_REFRACTED;
+    real3 medium = s->front ? ToReal3(m->absorption) : Vec3(0.0f);
+    if (!bs->transmit) {
+      child = RT_CHILD_REFLECTED;
+      below = transmissive ? 0 : ReflectionLeavesBelow(sd, s);
+      inside = transmissive ? !s->front : 0;
+      medium = transmissive && s->front ? Vec3(0.0f) : task->medium;
+    }
+    PushRay(stack, ChildTask(task, SpawnRay(sd, s, bs->wi, below),
+                             task->weight * bs->tint * bs->fresnel, medium, child, inside));
+  }
 }
 
 #endif  // RT_INTEGRATOR_RAY_TREE_H

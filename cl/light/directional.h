@@ -10,9 +10,9 @@ RT_DEVICE LightSample SampleDirectionalLight(RT_GLOBAL const Light* light,
                                              RT_PRIVATE const LightSampleContext* ctx) {
   LightSample ls;
   ls.wi = -ToReal3(light->normal);
-  // The shadow segment ends beyond the scene: param0 exceeds its bounding box's
+  // The shadow segment ends beyond the scene: the reach exceeds its bounding box's
   // diagonal, so from any point inside the box the segment leaves it.
-  ls.p_light = ctx->p + ls.wi * light->param0;
+  ls.p_light = ctx->p + ls.wi * RT_LIGHT_REACH(light);
   ls.irradiance = ToReal3(light->emission);
   ls.pdf = 0.0f;
   ls.valid = 1;

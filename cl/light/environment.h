@@ -23,14 +23,14 @@ RT_DEVICE real3 EnvTexel(RT_PRIVATE const SceneData* sd, int index) {
 // The radiance arriving along -dir, for a ray travelling along dir (any length).
 RT_DEVICE real3 EnvironmentRadiance(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
                                     real3 dir) {
-  real2 uv = EnvDirectionToUV(light->index, Normalize(dir));
-  return EnvTexel(sd, EnvTexelIndex(uv, (int)light->param1, (int)light->param2));
+  real2 uv = EnvDirectionToUV(RT_ENV_MAPPING(light), Normalize(dir));
+  return EnvTexel(sd, EnvTexelIndex(uv, (int)RT_ENV_WIDTH(light), (int)RT_ENV_HEIGHT(light)));
 }
 
 // The density, over the map, of the texel importance sampling draws.
 RT_DEVICE real EnvTexelDensity(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light, int x,
                                int y) {
-  int w = (int)light->param1, h = (int)light->param2;
+  int w = (int)RT_ENV_WIDTH(light), h = (int)RT_ENV_HEIGHT(light);
   RT_GLOBAL const float* marginal = sd->env_marginal_cdf;
   RT_GLOBAL const float* row = sd->env_conditional_cdf + y * (w + 1);
   return (marginal[y + 1] - marginal[y]) * (real)h * ((row[x + 1] - row[x]) * (real)w);
@@ -40,12 +40,12 @@ RT_DEVICE real EnvTexelDensity(RT_PRIVATE const SceneData* sd, RT_GLOBAL const L
 // the map is black), for tests and for combining with other strategies.
 RT_DEVICE real EnvironmentPdf(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
                               real3 d) {
-  if (light->area <= 0.0f) return 0.0f;
-  int w = (int)light->param1, h = (int)light->param2;
-  real2 uv = EnvDirectionToUV(light->index, d);
+  if (RT_ENV_INTEGRAL(light) <= 0.0f) return 0.0f;
+  int w = (int)RT_ENV_WIDTH(light), h = (int)RT_ENV_HEIGHT(light);
+  real2 uv = EnvDirectionToUV(RT_ENV_MAPPING(light), d);
   int texel = EnvTexelIndex(uv, w, h);
   real jacobian;
-  EnvUVToDirection(light->index, uv, &jacobian);
+  EnvUVToDirection(RT_ENV_MAPPING(light), uv, &jacobian);
   if (!(jacobian > 0.0f)) return 0.0f;
   return EnvTexelDensity(sd, light, texel % w, texel / w) / jacobian;
 }
@@ -69,27 +69,27 @@ RT_DEVICE LightSample SampleEnvironmentLight(RT_PRIVATE const SceneData* sd,
   ls.p_light = ctx->p;
   real pdf = 0.0f;
   real3 radiance = Vec3(0.0f);
-  if (light->variant == RT_ENV_SAMPLE_IMPORTANCE) {
-    if (light->area <= 0.0f) return ls;  // A black map sends nothing.
-    int w = (int)light->param1, h = (int)light->param2;
+  if (RT_ENV_SAMPLING(light) == RT_ENV_SAMPLE_IMPORTANCE) {
+    if (RT_ENV_INTEGRAL(light) <= 0.0f) return ls;  // A black map sends nothing.
+    int w = (int)RT_ENV_WIDTH(light), h = (int)RT_ENV_HEIGHT(light);
     real dv, du;
     int y = SampleCdf(sd->env_marginal_cdf, h, u.y, &dv);
     int x = SampleCdf(sd->env_conditional_cdf + y * (w + 1), w, u.x, &du);
     real jacobian;
     real2 uv = make_real2(((real)x + du) / (real)w, ((real)y + dv) / (real)h);
-    ls.wi = EnvUVToDirection(light->index, uv, &jacobian);
+    ls.wi = EnvUVToDirection(RT_ENV_MAPPING(light), uv, &jacobian);
     if (!(jacobian > 0.0f)) return ls;
     pdf = EnvTexelDensity(sd, light, x, y) / jacobian;
     // The texel drawn, not the one wi maps back to: rounding could cross a texel edge, and
     // the density is that of the texel drawn.
     radiance = EnvTexel(sd, y * w + x);
   } else {
-    ls.wi = SampleHemisphere(ctx->n, u, light->variant == RT_ENV_SAMPLE_COSINE, &pdf);
+    ls.wi = SampleHemisphere(ctx->n, u, RT_ENV_SAMPLING(light) == RT_ENV_SAMPLE_COSINE, &pdf);
     radiance = EnvironmentRadiance(sd, light, ls.wi);
   }
   if (!(pdf > 0.0f)) return ls;
   // The shadow segment leaves the scene's bounding box, as a directional light's.
-  ls.p_light = ctx->p + ls.wi * light->param0;
+  ls.p_light = ctx->p + ls.wi * RT_LIGHT_REACH(light);
   ls.irradiance = radiance * (1.0f / pdf);
   ls.valid = 1;
   return ls;

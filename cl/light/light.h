@@ -21,8 +21,8 @@ RT_DEVICE uint LightSampleOffset(RT_GLOBAL const Light* light) {
 }
 
 // Inlined whatever GCC's size heuristics say: kept out of line, AddLightSamples shrank
-// enough to be inlined into AccumulatePixel, which then outgrew the limits that keep
-// MakeTriangleRay and PermutationElement inlined (cornellbox_area +7 % instructions).
+// enough to be inlined into the pixel loop (AccumulatePixel), which then outgrew the
+// limits that keep MakeTriangleRay and PermutationElement inlined.
 RT_DEVICE_INLINE LightSample SampleLight(RT_PRIVATE const SceneData* sd,
                                          RT_GLOBAL const Light* light,
                                          RT_PRIVATE const LightSampleContext* ctx,

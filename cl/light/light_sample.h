@@ -28,7 +28,9 @@ typedef struct LightSample {
   // Irradiance the sample delivers to a surface facing wi (before the receiver's cosine,
   // which is the reflection model's), already divided by the sample's density.
   real3 irradiance;
-  // Density of wi per unit solid angle, for a path tracer's weighting; 0 for the lights
+  // Density of wi per unit solid angle, the light's side of multiple importance sampling
+  // (weighing a light sample against the BSDF's sampling of the same direction, with
+  // EmitterPdf for the other side); no integrator weighs samples yet. 0 for the lights
   // that sample a single direction (point, spot, directional), which a ray never finds.
   real pdf;
   int valid;  // 0 when the light sends nothing (the shading point lies on the light).

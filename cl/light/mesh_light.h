@@ -1,6 +1,6 @@
 // A LightMesh (hw6): a triangle mesh that emits radiance L from the front of each face,
 // the side (v1 - v0) x (v2 - v0) points to (every face of the course's mesh lights points
-// into the room; README, "Object lights"). It is sampled uniformly by world-space
+// into the room, which its reference images light). It is sampled uniformly by world-space
 // area: a triangle with the probability of its share of the area (a binary search of the
 // cumulative areas the host stores in light_cdf), then a point uniformly inside it, so
 // every point of the mesh has density 1 / A. One 2D sample drives both choices, so the
@@ -16,8 +16,8 @@
 // within that interval so it can place the point inside the triangle.
 RT_DEVICE int PickMeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
                                     RT_PRIVATE real* u) {
-  RT_GLOBAL const float* cdf = sd->light_cdf + light->cdf;
-  int lo = 0, hi = light->count - 1;
+  RT_GLOBAL const float* cdf = sd->light_cdf + RT_MESH_CDF(light);
+  int lo = 0, hi = RT_MESH_COUNT(light) - 1;
   while (lo < hi) {
     int mid = (lo + hi) / 2;
     if (cdf[mid] <= *u)
@@ -36,8 +36,8 @@ RT_DEVICE int PickMeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL co
 // the side a ray sees as front is the side that emits.
 RT_DEVICE void MeshLightTriangle(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
                                  int k, RT_PRIVATE real3* v, RT_PRIVATE real3* n) {
-  RT_GLOBAL const Instance* inst = &sd->instances[light->index];
-  RT_GLOBAL const Triangle* tri = &sd->triangles[light->first + k];
+  RT_GLOBAL const Instance* inst = &sd->instances[RT_LIGHT_INSTANCE(light)];
+  RT_GLOBAL const Triangle* tri = &sd->triangles[RT_MESH_FIRST(light) + k];
   v[0] = ToReal3(tri->v0);
   v[1] = ToReal3(tri->v1);
   v[2] = ToReal3(tri->v2);
@@ -56,7 +56,7 @@ RT_DEVICE real MeshLightPdf(RT_GLOBAL const Light* light, real3 p, real3 q, real
   real dist2 = Dot(to_p, to_p);
   real cos_light = Dot(n, to_p) / sqrt(dist2);
   if (!(cos_light > 0.0f)) return 0.0f;
-  return dist2 / (light->area * cos_light);
+  return dist2 / (RT_LIGHT_SURFACE_AREA(light) * cos_light);
 }
 
 RT_DEVICE LightSample SampleMeshLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
@@ -69,7 +69,8 @@ RT_DEVICE LightSample SampleMeshLight(RT_PRIVATE const SceneData* sd, RT_GLOBAL 
   real su = sqrt(ux);
   real b1 = (1.0f - u.y) * su, b2 = u.y * su;
   real3 q = v[0] * (1.0f - su) + v[1] * b1 + v[2] * b2;
-  LightSample ls = LightSampleTowards(ctx->p, q, ToReal3(light->emission) * light->area);
+  LightSample ls =
+      LightSampleTowards(ctx->p, q, ToReal3(light->emission) * RT_LIGHT_SURFACE_AREA(light));
   real cos_light = -Dot(n, ls.wi);
   if (!ls.valid || !(cos_light > 0.0f)) {
     ls.valid = 0;

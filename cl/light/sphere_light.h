@@ -35,7 +35,7 @@ RT_DEVICE real SphereLightPdfAt(RT_GLOBAL const Light* light, RT_GLOBAL const In
   real d_obj2 = Dot(to_pc, to_pc);
   real cos_obj = Dot(n, to_pc) / sqrt(d_obj2);
   real3 nw = TransformNormalByInverse(inst->world_to_object, n);
-  real jacobian = light->param0 * Length(nw);
+  real jacobian = RT_SPHERE_VOLUME_SCALE(light) * Length(nw);
   real3 to_p = p - q;
   real d2 = Dot(to_p, to_p);
   real cos_world = Dot(nw, to_p) / (Length(nw) * sqrt(d2));
@@ -46,7 +46,7 @@ RT_DEVICE real SphereLightPdfAt(RT_GLOBAL const Light* light, RT_GLOBAL const In
 RT_DEVICE LightSample SampleSphereLight(RT_PRIVATE const SceneData* sd,
                                         RT_GLOBAL const Light* light,
                                         RT_PRIVATE const LightSampleContext* ctx, real2 u) {
-  RT_GLOBAL const Instance* inst = &sd->instances[light->index];
+  RT_GLOBAL const Instance* inst = &sd->instances[RT_LIGHT_INSTANCE(light)];
   real3 pc = TransformPoint(inst->world_to_object, ctx->p);
   real dc2 = Dot(pc, pc);
   LightSample ls = LightSampleTowards(ctx->p, ctx->p, Vec3(0.0f));  // Not valid.
@@ -86,7 +86,7 @@ RT_DEVICE LightSample SampleSphereLight(RT_PRIVATE const SceneData* sd,
 // The density of SampleSphereLight for the world-space point q of the light, seen from p.
 RT_DEVICE real SphereLightPdf(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light, real3 p,
                               real3 q) {
-  RT_GLOBAL const Instance* inst = &sd->instances[light->index];
+  RT_GLOBAL const Instance* inst = &sd->instances[RT_LIGHT_INSTANCE(light)];
   real3 pc = TransformPoint(inst->world_to_object, p);
   real3 n = Normalize(TransformPoint(inst->world_to_object, q));
   return SphereLightPdfAt(light, inst, pc, n, p, q);

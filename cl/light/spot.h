@@ -13,9 +13,10 @@
 #include "light_sample.h"
 
 RT_DEVICE real SpotFalloff(RT_GLOBAL const Light* light, real cos_a) {
-  if (cos_a >= light->param0) return 1.0f;
-  if (cos_a <= light->param1) return 0.0f;
-  real t = (cos_a - light->param1) / (light->param0 - light->param1);
+  if (cos_a >= RT_SPOT_COS_FALLOFF(light)) return 1.0f;
+  if (cos_a <= RT_SPOT_COS_COVERAGE(light)) return 0.0f;
+  real t = (cos_a - RT_SPOT_COS_COVERAGE(light)) /
+           (RT_SPOT_COS_FALLOFF(light) - RT_SPOT_COS_COVERAGE(light));
   real t2 = t * t;
   return t2 * t2;
 }

@@ -1,27 +1,20 @@
-// What sampling a material's scattering returns to the path tracer (pbrt-v4's
+// What sampling a material's scattering returns to the integrators (pbrt-v4's
 // BSDFSample), and the sampling of the reflection model's non-specular part: uniformly over
 // the hemisphere, or cosine-weighted with the camera's ImportanceSampling.
 #ifndef RT_MATERIAL_BSDF_SAMPLE_H
 #define RT_MATERIAL_BSDF_SAMPLE_H
 
-#include "../sampling/sampler.h"
 #include "../geometry/surface.h"
+#include "../sampling/sampler.h"
 #include "brdf.h"
 
-// Random dimensions a path vertex draws, offsets from its key (cl/sampling/sampler.h). Lights use
-// 0x1000 + i, glossy perturbation 0x2000 and the dielectric's Fresnel choice 4 (as in the
-// ray tree, so the same materials draw the same numbers in both integrators).
-#define RT_DIM_BSDF_DIRECTION 0x3000u
-#define RT_DIM_BSDF_LOBE 0x3001u
-#define RT_DIM_RUSSIAN_ROULETTE 0x3002u
-#define RT_DIM_FRESNEL_CHOICE 4u
-
 // The lobes of a material: its reflection model (kd, ks; the part light sampling reaches),
-// and the delta lobes of mirrors, conductors and dielectrics.
+// and the delta lobes of mirrors, conductors and dielectrics (at most RT_DELTA_LOBES).
 #define RT_LOBE_REFLECTION 0
 #define RT_LOBE_SPECULAR_REFLECTION 1
 #define RT_LOBE_SPECULAR_TRANSMISSION 2
 #define RT_LOBE_COUNT 3
+#define RT_DELTA_LOBES 2
 
 typedef struct BsdfSample {
   real3 wi;      // Unit direction of the continued path.
@@ -30,6 +23,12 @@ typedef struct BsdfSample {
   // whose BRDF is 0.2"): the BRDF value f itself for the reflection model, the lobe's
   // reflectance for a delta lobe.
   real3 brdf;
+  // A delta lobe's reflectance as its two factors, tint * fresnel: the material's colour
+  // (a mirror's reflectance; 1 for a dielectric) and its Fresnel weight. The ray tree
+  // multiplies its ray's weight by them one after the other, the rounding its images
+  // were made with.
+  real3 tint;
+  real fresnel;
   int valid;     // 0: the path ends here (nothing reflected, or a lost draw).
   int specular;  // 1: a delta lobe (mirror, conductor, dielectric) that light sampling misses.
   int transmit;  // 1: the path passes through the surface (a dielectric's refraction).
@@ -41,6 +40,8 @@ RT_DEVICE BsdfSample NoBsdfSample() {
   bs.wi = Vec3(0.0f);
   bs.weight = Vec3(0.0f);
   bs.brdf = Vec3(0.0f);
+  bs.tint = Vec3(0.0f);
+  bs.fresnel = 0.0f;
   bs.valid = 0;
   bs.specular = 0;
   bs.transmit = 0;
@@ -48,12 +49,14 @@ RT_DEVICE BsdfSample NoBsdfSample() {
   return bs;
 }
 
-// A delta lobe's sample: reflectance `weight` along wi.
-RT_DEVICE BsdfSample SpecularBsdfSample(real3 wi, real3 weight, int transmit) {
+// A delta lobe's sample: reflectance tint * fresnel along wi.
+RT_DEVICE BsdfSample SpecularBsdfSample(real3 wi, real3 tint, real fresnel, int transmit) {
   BsdfSample bs = NoBsdfSample();
   bs.wi = wi;
-  bs.weight = weight;
-  bs.brdf = weight;
+  bs.weight = tint * fresnel;
+  bs.brdf = bs.weight;
+  bs.tint = tint;
+  bs.fresnel = fresnel;
   bs.valid = 1;
   bs.specular = 1;
   bs.transmit = transmit;

@@ -3,7 +3,6 @@
 #ifndef RT_MATERIAL_CONDUCTOR_H
 #define RT_MATERIAL_CONDUCTOR_H
 
-#include "../integrator/ray_tree.h"
 #include "../geometry/surface.h"
 #include "fresnel.h"
 #include "mirror.h"
@@ -13,20 +12,11 @@ RT_DEVICE real ConductorFresnel(RT_PRIVATE const Material* m, RT_PRIVATE const S
   return FrConductor(MaxF(Dot(s->n, s->wo), RT_R(0.0)), m->refraction_index, m->absorption_index);
 }
 
-RT_DEVICE void ScatterConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                                RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
-                                RaySampler rs, RT_PRIVATE RayStack* stack) {
-  real fr = ConductorFresnel(m, s);
-  real3 r = MirrorDirection(sd, m, s, rs);
-  PushRay(stack,
-          ChildTask(task, SpawnRay(sd, s, r, ReflectionLeavesBelow(sd, s)),
-                    task->weight * ToReal3(m->mirror) * fr, task->medium, RT_CHILD_REFLECTED, 0));
-}
-
+// The conductor's one lobe at s (facing the incoming ray).
 RT_DEVICE BsdfSample SampleConductor(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                      RT_PRIVATE const SurfacePoint* s, RaySampler rs) {
-  return SpecularBsdfSample(MirrorDirection(sd, m, s, rs),
-                            ToReal3(m->mirror) * ConductorFresnel(m, s), 0);
+  return SpecularBsdfSample(MirrorDirection(sd, m, s, rs), ToReal3(m->mirror),
+                            ConductorFresnel(m, s), 0);
 }
 
 #endif  // RT_MATERIAL_CONDUCTOR_H

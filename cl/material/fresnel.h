@@ -43,22 +43,19 @@ RT_DEVICE real3 Refract(real3 d, real3 n, real eta, real cos_i, real cos_t) {
   return Normalize(d * eta + n * (eta * cos_i - cos_t));
 }
 
-// e^x, skipping the call where x is zero (a channel the medium does not absorb, such as
-// metal_glass_plates' green), whose result is exactly 1 in every exponential.
+// e^x, skipping the call where x is zero (a channel the medium does not absorb), whose
+// result is exactly 1 in every exponential.
 RT_DEVICE real ExpUnlessZero(real x) { return x == 0.0f ? 1.0f : ExpR(x); }
 
-// Beer-Lambert attenuation over a path of length `distance` inside a medium.
-RT_DEVICE real3 BeerLambert(real3 absorption, real distance) {
+// Beer-Lambert attenuation over a path of length `distance` inside a medium. `portable`
+// takes util/transcendental.h's exponential, which both devices round alike: the path
+// tracer's weights decide where its paths go (roulette), so they must agree to the bit.
+// The ray tree's weights only scale what it finds, and it keeps the library's exponential
+// (ExpR), with which its images were made.
+RT_DEVICE real3 BeerLambert(real3 absorption, real distance, int portable) {
   real3 a = absorption * (-distance);
+  if (portable) return make_real3(Exp(a.x), Exp(a.y), Exp(a.z));
   return make_real3(ExpUnlessZero(a.x), ExpUnlessZero(a.y), ExpUnlessZero(a.z));
-}
-
-// The same with util/transcendental.h's exponential, which both devices round alike: the path
-// tracer's weights decide where paths go (roulette), so they must agree to the bit. The
-// ray tree keeps the library's, so that its images stay as they were.
-RT_DEVICE real3 BeerLambertPortable(real3 absorption, real distance) {
-  real3 a = absorption * (-distance);
-  return make_real3(Exp(a.x), Exp(a.y), Exp(a.z));
 }
 
 #endif  // RT_MATERIAL_FRESNEL_H

@@ -13,13 +13,13 @@ RT_DEVICE real3 PerturbDirection(real3 r, real roughness, real2 xi) {
   return Normalize(r + (u * (xi.x - 0.5f) + v * (xi.y - 0.5f)) * roughness);
 }
 
-// r itself for a smooth material, else r perturbed with the ray's glossy sample. PoCL kept
-// it out of line, a call per reflected or refracted ray that copied the sampler
-// (metal_glass_plates' glossy metal and glass: 7 % of its CPU time).
+// r itself for a smooth material, else r perturbed with the ray's glossy sample. Inlined
+// in the kernel: out of line, PoCL made it a call per reflected or refracted ray that
+// copied the sampler.
 RT_KERNEL_INLINE real3 GlossyDirection(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
                                        real3 r, RaySampler rs) {
   if (!RT_HAS(sd, RT_FEATURE_ROUGHNESS) || m->roughness <= 0.0f) return r;
-  return PerturbDirection(r, m->roughness, RaySample2D(&rs, 0x2000u));
+  return PerturbDirection(r, m->roughness, RaySample2D(&rs, RT_DIM_GLOSSY));
 }
 
 #endif  // RT_MATERIAL_GLOSSY_H

@@ -1,7 +1,9 @@
 // Materials as one dispatch point. At a hit, EvaluateMaterial gathers the material's
 // parameters at the surface point (pbrt-v4's Material::GetBxDF); direct lighting reflects
-// light through them (EvaluateBsdf) and Scatter pushes the rays the material spawns, one
-// function per type in this folder (pbrt-v4's BxDF::Sample_f; Cycles' closure/bsdf.h).
+// light through them (EvaluateBsdf), and both integrators continue through the lobes
+// SampleDeltaLobes and SampleReflectionLobe return, one sampling function per type in this
+// folder (pbrt-v4's BxDF::Sample_f; Cycles' bsdf_sample): the ray tree follows every delta
+// lobe, the path tracer splits into the lobes or picks one (SampleBsdf).
 #ifndef RT_MATERIAL_H
 #define RT_MATERIAL_H
 
@@ -54,17 +56,23 @@ RT_DEVICE int IsTransmissive(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Ma
   return IsTransmissiveType(sd, m->type);
 }
 
-// Pushes the rays the material sends on from s (facing the incoming ray); plain
-// Blinn-Phong surfaces send none.
-RT_DEVICE void Scatter(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                       RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const RayTask* task,
-                       RaySampler rs, RT_PRIVATE RayStack* stack) {
-  if (RT_HAS(sd, RT_MATERIAL_MIRROR) && m->type == RT_MATERIAL_MIRROR)
-    ScatterMirror(sd, m, s, task, rs, stack);
-  else if (RT_HAS(sd, RT_MATERIAL_CONDUCTOR) && m->type == RT_MATERIAL_CONDUCTOR)
-    ScatterConductor(sd, m, s, task, rs, stack);
-  else if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
-    ScatterDielectric(sd, m, s, task, rs, stack);
+// The delta lobes of the material at s (normals facing s->wo) into lobes[] (room for
+// RT_DELTA_LOBES), reflection before refraction; returns how many: none for plain
+// Blinn-Phong surfaces. `choose`: a dielectric returns one lobe, picked by Fresnel.
+RT_DEVICE int SampleDeltaLobes(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                               RT_PRIVATE const SurfacePoint* s, RaySampler rs, int choose,
+                               RT_PRIVATE BsdfSample* lobes) {
+  if (RT_HAS(sd, RT_MATERIAL_MIRROR) && m->type == RT_MATERIAL_MIRROR) {
+    lobes[0] = SampleMirror(sd, m, s, rs);
+    return 1;
+  }
+  if (RT_HAS(sd, RT_MATERIAL_CONDUCTOR) && m->type == RT_MATERIAL_CONDUCTOR) {
+    lobes[0] = SampleConductor(sd, m, s, rs);
+    return 1;
+  }
+  if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
+    return SampleDielectric(sd, m, s, rs, choose, lobes);
+  return 0;
 }
 
 // 1 for the materials whose scattering is a delta lobe (mirror, conductor, dielectric).
@@ -97,7 +105,8 @@ RT_DEVICE BsdfSample SampleReflectionLobe(RT_PRIVATE const SceneData* sd,
                                           RT_PRIVATE const SurfacePoint* s, RaySampler rs,
                                           int importance) {
   real pdf;
-  real3 wi = SampleReflectionDirection(s, RaySample2D(&rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
+  real3 wi =
+      SampleReflectionDirection(s, RaySample2D(&rs, RT_DIM_BSDF_DIRECTION), importance, &pdf);
   real cos_i = Dot(wi, s->n);
   // A direction below the geometric surface would leak through it.
   if (!(pdf > 0.0f) || !(cos_i > 0.0f) || Dot(wi, s->ng) <= 0.0f) return NoBsdfSample();
@@ -110,23 +119,19 @@ RT_DEVICE BsdfSample SampleReflectionLobe(RT_PRIVATE const SceneData* sd,
   return bs;
 }
 
-// Lobe `lobe` (RT_LOBE_*) of the material at s (normals facing s->wo) with its full
-// weight, for a path that splits into every lobe as the course's recursive renderer
-// does; not valid where the material has no such lobe.
-RT_DEVICE BsdfSample SampleBsdfLobe(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
-                                    RT_PRIVATE const SurfacePoint* s, RaySampler rs, int importance,
-                                    int lobe) {
-  if (lobe == RT_LOBE_REFLECTION)
-    return ReflectionShare(sd, m, s) > 0.0f ? SampleReflectionLobe(sd, m, s, rs, importance)
-                                            : NoBsdfSample();
-  if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
-    return SampleDielectric(sd, m, s, rs, lobe == RT_LOBE_SPECULAR_TRANSMISSION, 0);
-  if (lobe == RT_LOBE_SPECULAR_TRANSMISSION) return NoBsdfSample();
-  if (RT_HAS(sd, RT_MATERIAL_MIRROR) && m->type == RT_MATERIAL_MIRROR)
-    return SampleMirror(sd, m, s, rs);
-  if (RT_HAS(sd, RT_MATERIAL_CONDUCTOR) && m->type == RT_MATERIAL_CONDUCTOR)
-    return SampleConductor(sd, m, s, rs);
-  return NoBsdfSample();
+// Every lobe of the material at s (normals facing s->wo) into lobes[] (room for
+// RT_LOBE_COUNT) with its full weight, for a path that splits into every lobe as the
+// course's recursive renderer does: the reflection model where ReflectionShare is not 0,
+// then the delta lobes. Returns how many.
+RT_DEVICE int SampleBsdfLobes(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                              RT_PRIVATE const SurfacePoint* s, RaySampler rs, int importance,
+                              RT_PRIVATE BsdfSample* lobes) {
+  int n = 0;
+  if (ReflectionShare(sd, m, s) > 0.0f) {
+    lobes[0] = SampleReflectionLobe(sd, m, s, rs, importance);
+    n = lobes[0].valid;
+  }
+  return n + SampleDeltaLobes(sd, m, s, rs, 0, lobes + n);
 }
 
 // One continuation of a path at s, pbrt-v4's BSDF::Sample_f: the delta lobes with
@@ -137,10 +142,8 @@ RT_DEVICE BsdfSample SampleBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
   real share = ReflectionShare(sd, m, s);
   BsdfSample bs;
   if (share < 1.0f && (share <= 0.0f || RaySample1D(&rs, RT_DIM_BSDF_LOBE) >= share)) {
-    if (RT_HAS(sd, RT_MATERIAL_DIELECTRIC) && m->type == RT_MATERIAL_DIELECTRIC)
-      bs = SampleDielectric(sd, m, s, rs, 0, 1);
-    else
-      bs = SampleBsdfLobe(sd, m, s, rs, importance, RT_LOBE_SPECULAR_REFLECTION);
+    BsdfSample delta[RT_DELTA_LOBES];
+    bs = SampleDeltaLobes(sd, m, s, rs, 1, delta) > 0 ? delta[0] : NoBsdfSample();
     bs.weight = bs.weight * (1.0f / (1.0f - share));
   } else {
     bs = SampleReflectionLobe(sd, m, s, rs, importance);

@@ -7,17 +7,7 @@
 
 #include "../util/hash.h"
 #include "../util/math.h"
-
-// Dimensions of the camera sample, in the order the course names them.
-#define RT_DIM_PIXEL 0
-#define RT_DIM_LENS 2
-#define RT_DIM_TIME 4
-// Later dimensions are keyed by the ray's place in the ray tree (see RaySampler).
-#define RT_DIM_FIRST_FREE 5
-
-// The offset of the 2D sample a ray draws (RaySample2D) for its first light (light i draws
-// RT_OFFSET_LIGHT + i, LightSampleOffset).
-#define RT_OFFSET_LIGHT 0x1000u
+#include "dimensions.h"
 
 // A bit of PixelKey.cached and SampleKey.cached: the key holds the camera ray's first light
 // sample (CacheCameraRaySamples).
@@ -80,9 +70,6 @@ RT_DEVICE real RandomOfPrefix(uint prefix, uint dimension) {
   return UintToUnitFloat(HashCombine(prefix, dimension));
 }
 
-// The second coordinate of a 2D dimension is drawn from this dimension.
-#define RT_DIM_SECOND(dimension) ((dimension) ^ 0x68bc21ebu)
-
 RT_DEVICE real Random1D(SampleKey k, uint dimension) { return RandomOfPrefix(k.prefix, dimension); }
 
 RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
@@ -93,12 +80,12 @@ RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
 // `stratum_key` (StratumKey of the dimension); random when the sample count is not a
 // perfect square. One sample per pixel is one stratum, whose point is xi itself
 // ((0 + xi) * 1, exactly), so the permutation is skipped. StratumPoint2D is the point in
-// stratum `stratum` (the permutation element, made by the caller: cl/film/film.h makes a batch's
-// film and lens strata at once, PermutationElements).
-// One coordinate of the point of a stratum: its column or row `cell` jittered by xi, scaled
-// by inv = 1 / strata. The cell comes as an int (a stratum index is below 2^31, so the
-// conversion gives the uint's value): converting a signed int is one instruction, and the
-// camera batch's loops (cl/camera/camera_batch.h) stay eight lanes wide with it.
+// stratum `stratum` (the permutation element, made by the caller: cl/integrator/pixel.h makes a
+// batch's film and lens strata at once, PermutationElements). One coordinate of the point of a
+// stratum: its column or row `cell` jittered by xi, scaled by inv = 1 / strata. The cell comes as
+// an int (a stratum index is below 2^31, so the conversion gives the uint's value): converting a
+// signed int is one instruction, and the camera batch's loops (cl/camera/camera_batch.h) stay eight
+// lanes wide with it.
 RT_DEVICE real StratumCoordinate(int cell, real xi, real inv) { return ((real)cell + xi) * inv; }
 
 // StratumPointOf is StratumPoint2D with the jitter xi = Random2D(k, dimension) given.
@@ -162,9 +149,10 @@ RT_DEVICE PixelKey MakePixelKey(uint pixel, uint samples, uint strata, uint seed
 // traversal, it was a chain of four hash rounds for the stratum key (a per-pixel constant),
 // two for the jitter, the permutation and a division, on the path to the shadow ray; made
 // with the camera sample, the CPU's out-of-order window overlaps it with the other samples
-// of the batch (cl/film/film.h). The values are the same bits. Most camera rays of a scene with
-// area lights take a light sample; few hit a glossy surface, and making the glossy sample
-// (0x2000) the same way cost cornellbox_brushed_metal 7 % more instructions.
+// of the batch (cl/integrator/pixel.h). The values are the same bits. Most camera rays of a
+// scene with area lights take a light sample; few hit a glossy surface, so the glossy sample
+// (RT_DIM_GLOSSY) is not made this way: made for every sample, it would cost more than the
+// few rays that draw it save.
 RT_DEVICE void CacheCameraRaySamples(RT_PRIVATE PixelKey* p, uint which) {
   p->cached = which;
   if (p->strata > 1u && (which & RT_CACHE_LIGHT) != 0u)

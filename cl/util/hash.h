@@ -40,7 +40,7 @@ RT_DEVICE uint PermutationMask(uint n) {
 }
 
 // Always inlined: out of line, the batch's four rounds in PermutationElements cannot be
-// vectorized (GCC kept it out of line once AccumulatePixel grew: 9.8 % of tap's time).
+// vectorized, and GCC's size heuristics move it out of line once the pixel loop grows.
 RT_DEVICE_INLINE uint PermutationRound(uint i, uint w, uint key) {
   i ^= key;
   i *= 0xe170893du;
@@ -87,10 +87,10 @@ RT_KERNEL_INLINE uint PermutationElement(uint i, uint n, uint key) {
 }
 
 // Elements first .. first + count - 1 (count <= RT_PERMUTATION_BATCH, first + count <= n) of
-// the permutation into out[]: the CPU reference's camera batch (cl/film/film.h). Four rounds of
-// RT_PERMUTATION_BATCH elements run as one loop the compiler vectorizes, so no element waits
-// on a branch; the few still outside [0, n) after them (n = 9: 2 % of elements) walk on
-// alone. The same values as PermutationElement.
+// the permutation into out[]: the CPU reference's camera batch (cl/integrator/pixel.h). Four rounds
+// of RT_PERMUTATION_BATCH elements run as one loop the compiler vectorizes, so no element waits on
+// a branch; the few still outside [0, n) after them (n = 9: 2 % of elements) walk on alone. The
+// same values as PermutationElement.
 #define RT_PERMUTATION_BATCH 8
 RT_DEVICE_INLINE void PermutationElements(uint first, int count, uint n, uint key,
                                           RT_PRIVATE uint* out) {

@@ -64,7 +64,7 @@ void flatten_environment(const SceneDesc& scene, FlatScene& flat) {
       flat.env_texels[p] =
           map.channels >= 3 ? float4{t[0], t[1], t[2], 0} : float4{t[0], t[0], t[0], 0};
     }
-    std::vector<double> f = environment_importance(map, light.index);
+    std::vector<double> f = environment_importance(map, RT_ENV_MAPPING(&light));
     std::vector<double> rows(h);
     for (int y = 0; y < h; ++y)
       rows[y] = append_cdf(&f[static_cast<size_t>(y) * w], w, flat.env_conditional_cdf);
@@ -79,9 +79,9 @@ void place_environment(const SceneDesc& scene, FlatScene& flat) {
     Light& light = flat.lights[i];
     if (light.type != RT_LIGHT_ENVIRONMENT) continue;
     flat.header.environment = static_cast<int>(i);
-    light.param1 = static_cast<float>(scene.environment_map.width);
-    light.param2 = static_cast<float>(scene.environment_map.height);
-    light.area = flat.env_power;
+    RT_ENV_WIDTH(&light) = static_cast<float>(scene.environment_map.width);
+    RT_ENV_HEIGHT(&light) = static_cast<float>(scene.environment_map.height);
+    RT_ENV_INTEGRAL(&light) = flat.env_power;
   }
 }
 

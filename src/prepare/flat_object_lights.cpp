@@ -49,20 +49,20 @@ void append_object_lights(const SceneDesc& scene, const std::vector<int>& instan
     const ObjectDesc& o = scene.objects[i];
     if (!o.emits || instance_of_object[i] < 0) continue;
     Light l{};
-    l.index = instance_of_object[i];
+    RT_LIGHT_INSTANCE(&l) = instance_of_object[i];
     l.emission = to_float3(o.radiance);
     if (o.kind == ObjectDesc::kSphere) {
       l.type = RT_LIGHT_SPHERE;
-      l.param0 = static_cast<float>(std::fabs(determinant3(o.transform)));
+      RT_SPHERE_VOLUME_SCALE(&l) = static_cast<float>(std::fabs(determinant3(o.transform)));
     } else {
       l.type = RT_LIGHT_MESH;
-      l.first = flat.meshes[o.mesh].first_triangle;
-      l.count = static_cast<int>(scene.meshes[o.mesh].triangles.size());
-      l.cdf = static_cast<int>(flat.light_cdf.size());
-      l.area = static_cast<float>(
-          append_area_cdf(&flat.triangles[l.first], l.count, o.transform, flat.light_cdf));
+      RT_MESH_FIRST(&l) = flat.meshes[o.mesh].first_triangle;
+      RT_MESH_COUNT(&l) = static_cast<int>(scene.meshes[o.mesh].triangles.size());
+      RT_MESH_CDF(&l) = static_cast<int>(flat.light_cdf.size());
+      RT_LIGHT_SURFACE_AREA(&l) = static_cast<float>(append_area_cdf(
+          &flat.triangles[RT_MESH_FIRST(&l)], RT_MESH_COUNT(&l), o.transform, flat.light_cdf));
     }
-    flat.instance_lights[l.index] = static_cast<int>(flat.lights.size());
+    flat.instance_lights[RT_LIGHT_INSTANCE(&l)] = static_cast<int>(flat.lights.size());
     flat.lights.push_back(l);
   }
 }

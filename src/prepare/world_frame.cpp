@@ -95,7 +95,7 @@ std::vector<Light> frame_lights(const SceneDesc& scene, Vec3d origin) {
     l.edge2 = a.edge2;
     l.normal = a.normal;
     l.emission = a.radiance;
-    l.area = a.area;
+    RT_LIGHT_SURFACE_AREA(&l) = a.area;
     out.push_back(l);
   }
   for (Light l : scene.lights) {
@@ -187,7 +187,8 @@ void set_directional_distance(const std::vector<Aabb>& boxes, PageAlignedVector<
     diagonal += (double(world.hi[a]) - world.lo[a]) * (double(world.hi[a]) - world.lo[a]);
   float distance = static_cast<float>(std::max(1.0, 2.0 * std::sqrt(diagonal)));
   for (Light& l : lights)
-    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_ENVIRONMENT) l.param0 = distance;
+    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_ENVIRONMENT)
+      RT_LIGHT_REACH(&l) = distance;
 }
 
 }  // namespace rt

@@ -74,7 +74,7 @@ std::string ClProgramCache::options_for(int features, const KernelConfig& kernel
   // The width of the nodes and triangle blocks the host built (cl/bvh/simd.h, src/bvh/bvh_lanes.h).
   o += " -DRT_BVH_WIDTH=" + std::to_string(kernel.bvh_width);
   if (kernel.double_precision) o += " -DRT_REAL_DOUBLE=1";
-  // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/film/film.h).
+  // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/integrator/pixel.h).
   if (cpu_) o += " -DRT_CL_CPU_DEVICE=1";
   if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
   // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).

@@ -21,7 +21,7 @@
 #pragma GCC push_options
 #pragma GCC target("avx2,bmi,bmi2")
 namespace rt_avx2 {
-#include "cl/film/film.h"
+#include "cl/integrator/pixel.h"
 #include "cl/bvh/intersect.h"
 }  // namespace rt_avx2
 

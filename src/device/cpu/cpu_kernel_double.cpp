@@ -11,7 +11,7 @@
 #include "device/cpu/cpu_kernel.h"
 
 namespace rt_double {
-#include "cl/film/film.h"
+#include "cl/integrator/pixel.h"
 }  // namespace rt_double
 
 namespace rt {

@@ -1,7 +1,7 @@
 // The shared math in float, the default (the headers' `real` is float unless
 // RT_REAL_DOUBLE is defined, as in every other translation unit that includes them),
 // compiled for the baseline target of the build.
-#include "cl/film/film.h"
+#include "cl/integrator/pixel.h"
 #include "cl/bvh/intersect.h"
 #include "device/cpu/cpu_kernel.h"
 

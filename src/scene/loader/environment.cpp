@@ -7,12 +7,12 @@
 #include <string>
 
 #include "cl/light/environment_map.h"
-#include "util/errors.h"
 #include "image/read_hdr.h"
 #include "image/read_ldr.h"
 #include "scene/loader/loader.h"
 #include "scene/scene.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
@@ -37,18 +37,18 @@ void Loader::read_environment_light(const XMLElement* light, const XMLElement* s
   const char* type = light->Attribute("type");
   std::string mapping = type ? type : "latlong";
   if (mapping == "latlong")
-    env.index = RT_ENV_LATLONG;
+    RT_ENV_MAPPING(&env) = RT_ENV_LATLONG;
   else if (mapping == "probe")
-    env.index = RT_ENV_PROBE;
+    RT_ENV_MAPPING(&env) = RT_ENV_PROBE;
   else
     fail(light, "type '" + shorten(mapping) + "' is neither latlong nor probe");
-  env.variant = RT_ENV_SAMPLE_IMPORTANCE;
+  RT_ENV_SAMPLING(&env) = RT_ENV_SAMPLE_IMPORTANCE;
   if (const XMLElement* s = child(light, "Sampler", false)) {
     std::string sampler = trimmed(text_of(s));
     if (sampler == "uniform")
-      env.variant = RT_ENV_SAMPLE_UNIFORM;
+      RT_ENV_SAMPLING(&env) = RT_ENV_SAMPLE_UNIFORM;
     else if (sampler == "cosine")
-      env.variant = RT_ENV_SAMPLE_COSINE;
+      RT_ENV_SAMPLING(&env) = RT_ENV_SAMPLE_COSINE;
     else if (sampler != "importance")
       fail_value(s, "is not a Sampler (uniform, cosine or importance)");
   }

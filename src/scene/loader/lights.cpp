@@ -13,12 +13,12 @@
 #include <sstream>
 
 #include "cl/material/brdf.h"
-#include "util/errors.h"
 #include "image/read_ldr.h"
 #include "scene/loader/loader.h"
 #include "scene/ply.h"
 #include "scene/scene.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
@@ -77,7 +77,7 @@ void Loader::read_lights(const XMLElement* scene) {
       const XMLElement* dir = child(l, "Direction", true);
       d.normal = to_float3(normalize(nonzero(dir, vec3(dir))));
       d.emission = to_float3(non_negative(child(l, "Radiance", true)));
-      scene_.lights.push_back(d);  // prepare_camera sets param0 from the scene's bounds.
+      scene_.lights.push_back(d);  // prepare_camera sets its reach from the scene's bounds.
     } else if (name == "SpotLight") {
       Light s{};
       s.type = RT_LIGHT_SPOT;
@@ -91,8 +91,8 @@ void Loader::read_lights(const XMLElement* scene) {
       if (!(coverage > 0 && coverage <= 360)) fail_value(cov, "must lie in (0, 360] degrees");
       if (!(falloff >= 0 && falloff <= coverage))
         fail_value(fall, "must lie in [0, CoverageAngle] degrees");
-      s.param1 = static_cast<float>(std::cos(coverage * M_PI / 360.0));
-      s.param0 = static_cast<float>(std::cos(falloff * M_PI / 360.0));
+      RT_SPOT_COS_COVERAGE(&s) = static_cast<float>(std::cos(coverage * M_PI / 360.0));
+      RT_SPOT_COS_FALLOFF(&s) = static_cast<float>(std::cos(falloff * M_PI / 360.0));
       scene_.lights.push_back(s);
     } else if (name == "SphericalDirectionalLight") {
       read_environment_light(l, scene);
