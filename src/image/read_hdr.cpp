@@ -151,6 +151,15 @@ ImageF read_radiance_hdr(const std::string& path) {
     throw hdr_error(path, "unsupported resolution line '" + line + "' (only -Y h +X w)");
   if (w <= 0 || h <= 0 || static_cast<long long>(w) * h > kMaxPixels)
     throw hdr_error(path, "image size " + std::to_string(w) + "x" + std::to_string(h));
+  // The smallest scanline either layout can encode: flat, or (8 <= w < 32768) the 4-byte
+  // marker plus one 2-byte run per 127 pixels of each component. A file too short for that
+  // is refused before its pixels are allocated (3 GiB for an 80-byte file otherwise).
+  long long min_line = 4LL * w;
+  if (w >= 8 && w < 32768) min_line = std::min(min_line, 4 + 8 * ((w + 126) / 127LL));
+  if (static_cast<long long>(d.size() - pos) < min_line * h)
+    throw hdr_error(path, "pixel data of " + std::to_string(d.size() - pos) +
+                              " bytes is too short for " + std::to_string(w) + "x" +
+                              std::to_string(h) + " pixels");
   ImageF img;
   img.width = w;
   img.height = h;
