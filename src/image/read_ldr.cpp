@@ -48,13 +48,16 @@ ImageF read_jpeg(const std::string& path, std::FILE* file) {
   out->width = static_cast<int>(cinfo.output_width);
   out->height = static_cast<int>(cinfo.output_height);
   out->channels = 3;
-  out->pixels.resize(out->size() * 3);
+  // The pixels grow with the rows decoded, not to the header's size at once: a truncated
+  // file claiming 16000x16000 fails at its first missing row instead of allocating 3 GiB.
   std::vector<unsigned char> row(static_cast<size_t>(out->width) * 3);
   while (cinfo.output_scanline < cinfo.output_height) {
-    size_t y = cinfo.output_scanline;
     JSAMPROW rows[1] = {row.data()};
-    jpeg_read_scanlines(&cinfo, rows, 1);
-    for (size_t i = 0; i < row.size(); ++i) out->pixels[y * row.size() + i] = row[i];
+    if (jpeg_read_scanlines(&cinfo, rows, 1) != 1) {
+      jpeg_destroy_decompress(&cinfo);
+      fail(path, "JPEG: a scanline could not be decoded");
+    }
+    out->pixels.insert(out->pixels.end(), row.begin(), row.end());
   }
   jpeg_finish_decompress(&cinfo);
   jpeg_destroy_decompress(&cinfo);
