@@ -56,18 +56,24 @@ ImageF read_exr(const std::string& path) {
     img.width = static_cast<int>(w);
     img.height = static_cast<int>(h);
     img.channels = static_cast<int>(names.size());
-    img.pixels.assign(img.size() * img.channels, 0.0f);
+    // Read in strips of 64 rows, the pixels growing with each: a damaged file whose header
+    // claims 16384x16384 fails at its first missing strip instead of allocating 4 GiB.
     // OpenEXR addresses pixel (x, y) as base + x * xstride + y * ystride over the data
-    // window, which need not start at (0, 0).
-    size_t xs = sizeof(float) * img.channels, ys = xs * img.width;
-    Imf::FrameBuffer fb;
-    for (int c = 0; c < img.channels; ++c) {
-      char* base = reinterpret_cast<char*>(img.pixels.data() + c) -
-                   static_cast<ptrdiff_t>(dw.min.x) * xs - static_cast<ptrdiff_t>(dw.min.y) * ys;
-      fb.insert(names[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
+    // window, which need not start at (0, 0); the base moves as the buffer grows.
+    const size_t xs = sizeof(float) * img.channels, ys = xs * img.width;
+    for (long long row = 0; row < h; row += 64) {
+      const int y0 = static_cast<int>(dw.min.y + row);
+      const int y1 = static_cast<int>(dw.min.y + std::min(h - 1, row + 63));
+      img.pixels.resize(static_cast<size_t>(y1 - dw.min.y + 1) * img.width * img.channels);
+      Imf::FrameBuffer fb;
+      for (int c = 0; c < img.channels; ++c) {
+        char* base = reinterpret_cast<char*>(img.pixels.data() + c) -
+                     static_cast<ptrdiff_t>(dw.min.x) * xs - static_cast<ptrdiff_t>(dw.min.y) * ys;
+        fb.insert(names[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
+      }
+      file.setFrameBuffer(fb);
+      file.readPixels(y0, y1);
     }
-    file.setFrameBuffer(fb);
-    file.readPixels(dw.min.y, dw.max.y);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
