@@ -57,6 +57,9 @@ dict=""
 [ -f "$src/fuzz/$target.dict" ] && dict="-dict=$src/fuzz/$target.dict"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+case $target in
+  obj | gltf) export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$src/fuzz/assimp_lsan.supp}" ;;
+esac
 jobs=${RT_FUZZ_JOBS:-1}
 echo "fuzz_$target: $(ls "$seeds" | wc -l) seeds, ${seconds} s, $jobs process(es), corpus $corpus"
 # -max_len bounds the inputs (the seeds are at most 64 KiB); -timeout flags any input that
