@@ -13,6 +13,7 @@
 #include <string>
 
 #include "fuzz/targets.h"
+#include "image/read_hdr.h"
 
 namespace rt {
 namespace {
@@ -71,6 +72,24 @@ INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay, testing::ValuesIn(kTargets),
                          [](const testing::TestParamInfo<Target>& info) {
                            return std::string(info.param.name);
                          });
+
+// The seeds are valid files: every one must be read, as large as its kind's writer made it,
+// so a bound added against hostile headers cannot refuse a real image unnoticed.
+TEST(FuzzSeeds, EveryImageSeedIsRead) {
+  int count = 0;
+  for (const char* kind : {"png", "jpeg", "exr", "hdr"})
+    for (const auto& entry : std::filesystem::directory_iterator(
+             std::filesystem::path(RT_SOURCE_DIR) / "fuzz/seeds" / kind)) {
+      SCOPED_TRACE(entry.path().string());
+      ImageF img;
+      EXPECT_NO_THROW(img = read_any_image(entry.path().string()));
+      EXPECT_GT(img.width, 0);
+      EXPECT_GT(img.height, 0);
+      EXPECT_EQ(img.pixels.size(), img.size() * img.channels);
+      ++count;
+    }
+  EXPECT_GE(count, 20);
+}
 
 }  // namespace
 }  // namespace rt
