@@ -77,7 +77,8 @@ else
   # The seeds join the shared corpus once; then every process mutates that one folder and
   # picks up what the others add (libFuzzer rereads it, -reload=1).
   # shellcheck disable=SC2086
-  "$fuzzer" $dict -runs=0 -max_len=65536 -merge=1 "$corpus" "$seeds" >/dev/null 2>&1
+  "$fuzzer" $dict -max_len=65536 -merge=1 -artifact_prefix="$dir/fuzz-artifacts/$target/" \
+    "$corpus" "$seeds" >"$dir/fuzz-artifacts/$target/merge.log" 2>&1
   pids=""
   for j in $(seq 1 "$jobs"); do
     # shellcheck disable=SC2086
