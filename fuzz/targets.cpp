@@ -1,43 +1,32 @@
 #include "fuzz/targets.h"
 
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "app/cli.h"
-#include "util/errors.h"
+#include "fuzz/scratch.h"
 #include "prepare/flat_scene.h"
 #include "scene/ply.h"
 #include "scene/scene.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {
 
-// A folder with a quad as m.ply, made once per process and removed at its end, so fuzzed
-// scenes reach the PLY path of the loader through plyFile="m.ply".
-struct SceneFolder {
-  std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("rt-fuzz-" + std::to_string(getpid()));
-  SceneFolder() {
-    std::filesystem::create_directories(dir);
-    std::ofstream(dir / "m.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
-                                    "property float y\nproperty float z\nelement face 1\n"
-                                    "property list uchar int vertex_indices\nend_header\n"
-                                    "0 0 -2\n1 0 -2\n1 1 -2\n0 1 -2\n4 0 1 2 3\n";
-  }
-  ~SceneFolder() {
-    std::error_code ec;
-    std::filesystem::remove_all(dir, ec);
-  }
-};
-
+// The scratch folder with a quad as m.ply, written once per process, so fuzzed scenes reach
+// the PLY path of the loader through plyFile="m.ply".
 std::string scene_folder() {
-  static const SceneFolder folder;
-  return folder.dir.string();
+  static const std::string dir = [] {
+    static const char kQuad[] =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\n"
+        "property list uchar int vertex_indices\nend_header\n"
+        "0 0 -2\n1 0 -2\n1 1 -2\n0 1 -2\n4 0 1 2 3\n";
+    fuzz_scratch_file("m.ply", reinterpret_cast<const uint8_t*>(kQuad), sizeof kQuad - 1);
+    return fuzz_scratch_dir();
+  }();
+  return dir;
 }
 
 }  // namespace

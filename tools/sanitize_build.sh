@@ -1,6 +1,7 @@
 #!/bin/sh
 # Configures and builds the sanitized tree: clang, AddressSanitizer + UndefinedBehaviorSanitizer,
-# libFuzzer hooks; targets: the unit tests and the three fuzzers. Run by the test
+# libFuzzer hooks; targets: the unit tests, the fuzz replay tests and every fuzzer of
+# fuzz/CMakeLists.txt. Run by the test
 # sanitize.build (fuzz/CMakeLists.txt); exits 77 (skipped) when clang or its sanitizer and
 # libFuzzer runtimes (Debian: clang, libclang-rt-14-dev) are missing.
 # usage: tools/sanitize_build.sh BUILD_DIR
@@ -23,4 +24,6 @@ fi
 # -O1 keeps the sanitized unit tests fast enough; asserts stay on (no NDEBUG).
 cmake -S "$src" -B "$dir" -DCMAKE_CXX_COMPILER=clang++ -DRT_SANITIZE=ON \
   -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" >/dev/null
-cmake --build "$dir" -j"$(nproc)" --target unit_tests fuzz_scene fuzz_ply fuzz_cli
+fuzzers=$(cat "$dir/fuzz/fuzzers.txt")  # Written by fuzz/CMakeLists.txt.
+# shellcheck disable=SC2086  # one word per fuzzer
+cmake --build "$dir" -j"$(nproc)" --target unit_tests fuzz_replay_tests $fuzzers

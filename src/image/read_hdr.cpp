@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include "util/errors.h"
@@ -31,11 +33,37 @@ InputError hdr_error(const std::string& path, const std::string& why) {
 // us allocate tens of gigabytes.
 constexpr long long kMaxPixels = 1LL << 28;
 
+// OpenEXR 3.1 allocates and clears each header attribute at the size the file claims
+// before reading it: a 426-byte file claiming a 200 MB attribute took 25 s under ASan. The
+// first header's attribute sizes (name, type, 4-byte size, value; an empty name ends it)
+// must fit in the file, else it is refused here.
+void check_exr_attribute_sizes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<unsigned char> d((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
+  size_t p = 8;  // Magic number and version.
+  auto text = [&](std::string* out) {
+    out->clear();
+    while (p < d.size() && d[p] != 0) out->push_back(static_cast<char>(d[p++]));
+    return p++ < d.size();
+  };
+  std::string name, type;
+  while (p < d.size() && text(&name) && !name.empty() && text(&type) && p + 4 <= d.size()) {
+    const uint32_t size = d[p] | d[p + 1] << 8 | d[p + 2] << 16 | uint32_t{d[p + 3]} << 24;
+    p += 4;
+    if (size > d.size() - p)
+      throw exr_error(path, "header attribute '" + name + "' claims " + std::to_string(size) +
+                                " bytes, the file has " + std::to_string(d.size() - p) + " left");
+    p += size;
+  }
+}
+
 }  // namespace
 
 ImageF read_exr(const std::string& path) {
   ImageF img;
   img.max_value = 0.0f;
+  check_exr_attribute_sizes(path);
   try {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i dw = file.header().dataWindow();
@@ -56,18 +84,24 @@ ImageF read_exr(const std::string& path) {
     img.width = static_cast<int>(w);
     img.height = static_cast<int>(h);
     img.channels = static_cast<int>(names.size());
-    img.pixels.assign(img.size() * img.channels, 0.0f);
+    // Read in strips of 64 rows, the pixels growing with each: a damaged file whose header
+    // claims 16384x16384 fails at its first missing strip instead of allocating 4 GiB.
     // OpenEXR addresses pixel (x, y) as base + x * xstride + y * ystride over the data
-    // window, which need not start at (0, 0).
-    size_t xs = sizeof(float) * img.channels, ys = xs * img.width;
-    Imf::FrameBuffer fb;
-    for (int c = 0; c < img.channels; ++c) {
-      char* base = reinterpret_cast<char*>(img.pixels.data() + c) -
-                   static_cast<ptrdiff_t>(dw.min.x) * xs - static_cast<ptrdiff_t>(dw.min.y) * ys;
-      fb.insert(names[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
+    // window, which need not start at (0, 0); the base moves as the buffer grows.
+    const size_t xs = sizeof(float) * img.channels, ys = xs * img.width;
+    for (long long row = 0; row < h; row += 64) {
+      const int y0 = static_cast<int>(dw.min.y + row);
+      const int y1 = static_cast<int>(dw.min.y + std::min(h - 1, row + 63));
+      img.pixels.resize(static_cast<size_t>(y1 - dw.min.y + 1) * img.width * img.channels);
+      Imf::FrameBuffer fb;
+      for (int c = 0; c < img.channels; ++c) {
+        char* base = reinterpret_cast<char*>(img.pixels.data() + c) -
+                     static_cast<ptrdiff_t>(dw.min.x) * xs - static_cast<ptrdiff_t>(dw.min.y) * ys;
+        fb.insert(names[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
+      }
+      file.setFrameBuffer(fb);
+      file.readPixels(y0, y1);
     }
-    file.setFrameBuffer(fb);
-    file.readPixels(dw.min.y, dw.max.y);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
@@ -151,6 +185,15 @@ ImageF read_radiance_hdr(const std::string& path) {
     throw hdr_error(path, "unsupported resolution line '" + line + "' (only -Y h +X w)");
   if (w <= 0 || h <= 0 || static_cast<long long>(w) * h > kMaxPixels)
     throw hdr_error(path, "image size " + std::to_string(w) + "x" + std::to_string(h));
+  // The smallest scanline either layout can encode: flat, or (8 <= w < 32768) the 4-byte
+  // marker plus one 2-byte run per 127 pixels of each component. A file too short for that
+  // is refused before its pixels are allocated (3 GiB for an 80-byte file otherwise).
+  long long min_line = 4LL * w;
+  if (w >= 8 && w < 32768) min_line = std::min(min_line, 4 + 8 * ((w + 126) / 127LL));
+  if (static_cast<long long>(d.size() - pos) < min_line * h)
+    throw hdr_error(path, "pixel data of " + std::to_string(d.size() - pos) +
+                              " bytes is too short for " + std::to_string(w) + "x" +
+                              std::to_string(h) + " pixels");
   ImageF img;
   img.width = w;
   img.height = h;

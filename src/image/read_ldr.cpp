@@ -30,8 +30,11 @@ ImageF read_jpeg(const std::string& path, std::FILE* file) {
   cinfo.err = jpeg_error_jump(&err);
   err.mgr.emit_message = on_jpeg_message;
   // Declared before setjmp so a longjmp leaves it in a defined state.
+  // The row buffer too: a longjmp skips the destructors of objects made after setjmp.
   ImageF* volatile out = new ImageF;
   std::unique_ptr<ImageF> guard(out);
+  std::vector<unsigned char>* volatile row = new std::vector<unsigned char>;
+  std::unique_ptr<std::vector<unsigned char>> row_guard(row);
   if (setjmp(err.jump)) {
     jpeg_destroy_decompress(&cinfo);
     fail(path, std::string("JPEG: ") + err.message);
@@ -48,13 +51,16 @@ ImageF read_jpeg(const std::string& path, std::FILE* file) {
   out->width = static_cast<int>(cinfo.output_width);
   out->height = static_cast<int>(cinfo.output_height);
   out->channels = 3;
-  out->pixels.resize(out->size() * 3);
-  std::vector<unsigned char> row(static_cast<size_t>(out->width) * 3);
+  // The pixels grow with the rows decoded, not to the header's size at once: a truncated
+  // file claiming 16000x16000 fails at its first missing row instead of allocating 3 GiB.
+  row->resize(static_cast<size_t>(out->width) * 3);
   while (cinfo.output_scanline < cinfo.output_height) {
-    size_t y = cinfo.output_scanline;
-    JSAMPROW rows[1] = {row.data()};
-    jpeg_read_scanlines(&cinfo, rows, 1);
-    for (size_t i = 0; i < row.size(); ++i) out->pixels[y * row.size() + i] = row[i];
+    JSAMPROW rows[1] = {row->data()};
+    if (jpeg_read_scanlines(&cinfo, rows, 1) != 1) {
+      jpeg_destroy_decompress(&cinfo);
+      fail(path, "JPEG: a scanline could not be decoded");
+    }
+    out->pixels.insert(out->pixels.end(), row->begin(), row->end());
   }
   jpeg_finish_decompress(&cinfo);
   jpeg_destroy_decompress(&cinfo);

@@ -122,6 +122,16 @@ void decode_body(png_structp png, png_infop info, std::FILE* file, Image8* out) 
   const int bit_depth = png_get_bit_depth(png, info);
   const int color_type = png_get_color_type(png, info);
   if (uint64_t{width} * height * 3 > kMaxReadBytes) png_error(png, "image too large");
+  // Deflate expands at most 1032:1, so the rows (a filter byte each) must fit in 1032 times
+  // the file's size: a 69-byte file claiming 18000x18000 is refused here, before 1 GB of
+  // pixels is allocated and cleared.
+  const long at = std::ftell(file);
+  std::fseek(file, 0, SEEK_END);
+  const long file_size = std::ftell(file);
+  std::fseek(file, at, SEEK_SET);
+  if (file_size >= 0 &&
+      uint64_t{height} * (png_get_rowbytes(png, info) + 1) > 1032 * uint64_t(file_size) + 1032)
+    png_error(png, "file too short for the image size in its header");
 
   // Bring every layout to 8-bit RGB. No png_set_gamma: stored values are returned as is.
   if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);

@@ -327,13 +327,26 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
       s.area_lights.push_back(area_light_from_json(a));
     for (const json& l : scene_extras->value("lights", json::array()))
       s.lights.push_back(device_light_from_json(l));
-    // Materials in the exporter's order (material0, material1, ...), by name.
     std::map<int, Material> by_index;
+    // Materials by name, in the exporter's order: it names its i-th material material<i>. Another
+    // tool may have dropped some (a gap, filled below), so the numbers may pass the count, but not
+    // the bound here: any other name would throw from std::stoi or make billions of default
+    // materials.
+    constexpr size_t kMaxMaterials = 1 << 16;
     for (const json& m : gltf_.value("materials", json::array()))
       if (m.contains("extras") && m["extras"].contains(kExtrasKey)) {
         std::string n = m.value("name", "");
-        if (n.rfind("material", 0) == 0)
-          by_index[std::stoi(n.substr(8))] = material_from_json(m["extras"][kExtrasKey]);
+        if (n.rfind("material", 0) != 0) continue;
+        const std::string digits = n.substr(8);
+        size_t index = kMaxMaterials;
+        if (!digits.empty() && digits.size() <= 5 &&
+            digits.find_first_not_of("0123456789") == std::string::npos)
+          index = std::stoul(digits);
+        if (index >= kMaxMaterials)
+          throw ConvertError(file_ + ": glTF material '" + n +
+                             "' has course extras but is not named material0 to material" +
+                             std::to_string(kMaxMaterials - 1));
+        by_index[static_cast<int>(index)] = material_from_json(m["extras"][kExtrasKey]);
       }
     // A material another tool dropped leaves a gap: a default takes its place.
     int count = by_index.empty() ? 0 : by_index.rbegin()->first + 1;
