@@ -9,6 +9,7 @@
 
 #include "exact.h"
 #include "image_metrics.h"
+#include "inputs.h"
 #include "maps.h"
 #include "options.h"
 #include "paired.h"
@@ -17,20 +18,27 @@
 namespace cmp {
 namespace {
 
-// The options and the two files of a subcommand; bad usage exits with status 2.
-CompareOptions parse(const char* sub, int argc, char** argv, std::vector<std::string>* files) {
-  const rt::OptionTable<CompareOptions>& table = *subcommand_table(sub);
-  CompareOptions o = table.defaults();
-  *files = table.parse_or_exit(argc, argv, &o, 2);
-  if (files->size() != 2) table.usage_error(std::string(sub) + " takes two files");
-  return o;
-}
-
 // Accepts a moment file or the PNG it was written beside.
 rt::MomentImage load(const std::string& path) {
   std::string p = path;
   if (p.size() > 4 && p.compare(p.size() - 4, 4, ".png") == 0) p = rt::moments_path_for(p);
   return rt::read_moments(p);
+}
+
+// Both files, of the same size (one line naming both sizes otherwise).
+void load_pair(const std::vector<std::string>& files, rt::MomentImage* a, rt::MomentImage* b) {
+  *a = load(files[0]);
+  *b = load(files[1]);
+  require_same_size(files[0], a->width, a->height, files[1], b->width, b->height);
+}
+
+// Two renders with the same means and sample counts everywhere need no test: say so, pass.
+bool report_identical(const rt::MomentImage& a, const rt::MomentImage& b) {
+  if (a.mean != b.mean || a.count != b.count) return false;
+  std::printf(
+      "  identical: A and B hold the same mean radiance and sample count in every "
+      "pixel; nothing to test\nverdict: PASS\n");
+  return true;
 }
 
 void describe(const char* label, const std::string& path, const rt::MomentImage& m) {
@@ -66,13 +74,15 @@ int conclude(const CompareOptions& o, const char* name, Family& f) {
 
 int run_welch(int argc, char** argv) {
   std::vector<std::string> files;
-  CompareOptions o = parse("welch", argc, argv, &files);
-  rt::MomentImage ma = load(files[0]), mb = load(files[1]);
+  CompareOptions o = parse_subcommand("welch", argc, argv, &files);
+  rt::MomentImage ma, mb;
+  load_pair(files, &ma, &mb);
   check_testable(ma, mb, o.allow_weighted);
   std::printf("welch: per-cell Welch t-test, H0: equal expected radiance in every cell\n");
   describe_inputs(files, ma, mb, true,
                   "equal seeds: the samples are correlated and this test loses power "
                   "(use `compare paired`)");
+  if (report_identical(ma, mb)) return 0;
   // At unequal sample counts the renders' means are skewed unequally, and a heavy-tailed
   // estimator (a path tracer: most samples 0, a few carry the light) then gives plain
   // per-pixel Welch false alarms (tests/path_compare_test.cpp: 16 against 256 spp of the
@@ -90,14 +100,16 @@ int run_welch(int argc, char** argv) {
 
 int run_paired(int argc, char** argv) {
   std::vector<std::string> files;
-  CompareOptions o = parse("paired", argc, argv, &files);
-  rt::MomentImage ma = load(files[0]), mb = load(files[1]);
+  CompareOptions o = parse_subcommand("paired", argc, argv, &files);
+  rt::MomentImage ma, mb;
+  load_pair(files, &ma, &mb);
   check_testable(ma, mb, true);
   const PairedOptions& po = o.paired;
   std::printf("paired: sign tests of per-pixel differences, H0: differences symmetric about 0\n");
   describe_inputs(files, ma, mb, false,
                   "different seeds: still a valid test, but not the sensitive paired "
                   "one (render both with the same --seed)");
+  if (report_identical(ma, mb)) return 0;
   PairedFigures pf = paired_figures(ma, mb, po);
   std::printf(
       "  pixel-channels beyond float resolution %zu of %zu (%.3f %%, %zu positive), "
@@ -110,8 +122,9 @@ int run_paired(int argc, char** argv) {
 
 int run_exact(int argc, char** argv) {
   std::vector<std::string> files;
-  CompareOptions o = parse("exact", argc, argv, &files);
-  rt::MomentImage ma = load(files[0]), mb = load(files[1]);
+  CompareOptions o = parse_subcommand("exact", argc, argv, &files);
+  rt::MomentImage ma, mb;
+  load_pair(files, &ma, &mb);
   const ExactOptions& eo = o.exact;
   std::printf("exact: first-sample hits, H0: same ids, distances and normals within tolerance\n");
   describe_inputs(files, ma, mb, false,
@@ -139,9 +152,10 @@ int run_exact(int argc, char** argv) {
 
 int run_diff(int argc, char** argv) {
   std::vector<std::string> files;
-  CompareOptions o = parse("diff", argc, argv, &files);
+  CompareOptions o = parse_subcommand("diff", argc, argv, &files);
   int threshold = o.threshold, k = o.downsample;
   rt::Image8 ia = rt::read_png(files[0]), ib = rt::read_png(files[1]);
+  require_same_size(files[0], ia.width, ia.height, files[1], ib.width, ib.height);
   rt::ImageDiff d = rt::diff_images(ia, ib, threshold);
   rt::ImageDiff dk = rt::diff_images(rt::downsample(ia, k), rt::downsample(ib, k), threshold);
   std::printf(
@@ -154,6 +168,7 @@ int run_diff(int argc, char** argv) {
   int status = 0;
   if (!o.moments.empty()) {
     rt::MomentImage mb = rt::read_moments(o.moments);
+    require_same_size(files[0], ia.width, ia.height, o.moments, mb.width, mb.height);
     const WelchOptions& wo = o.welch;
     const FamilyOptions& fo = o.family;
     std::printf(

@@ -8,5 +8,8 @@ int run_welch(int argc, char** argv);
 int run_paired(int argc, char** argv);
 int run_exact(int argc, char** argv);
 int run_diff(int argc, char** argv);
+int run_report(int argc, char** argv);     // Exit 0 once the page is written.
+int run_reference(int argc, char** argv);  // 0 pass, 1 fail.
+int run_summary(int argc, char** argv);    // 0.
 
 }  // namespace cmp

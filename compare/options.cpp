@@ -112,8 +112,53 @@ Table make_diff() {
   return t;
 }
 
+// The list of course scenes `compare reference` looks a criterion up in.
+#ifndef RT_COURSE_SCENES
+#define RT_COURSE_SCENES "tests/course_scenes.txt"
+#endif
+
+Table make_report() {
+  Table t("compare report", "compare report A B --out FILE.html|DIR [options]",
+          "One HTML page for a person: A, B, a difference map, the worst tiles enlarged and "
+          "a verdict in words; see compare --help.");
+  t.section("report")
+      .text("--out", "FILE|DIR", RT_FIELD(out),
+            "the page to write (a directory: DIR/report.html); required")
+      .integer("--tile", "K", Range::closed(2, 4096), RT_FIELD(report_tile),
+               "tile edge in pixels: the cells of the test and of the enlargements")
+      .integer("--worst", "N", Range::closed(0, 100), RT_FIELD(worst), "tiles to enlarge");
+  add_verdict(t);
+  return t;
+}
+
+Table make_reference() {
+  CompareOptions d;
+  d.scenes_list = RT_COURSE_SCENES;
+  Table t("compare reference", "compare reference RENDER.png REFERENCE.png [options]",
+          "Checks an existing render against the course's official image by the reference "
+          "tests' criterion; see compare --help.",
+          d);
+  t.section("reference")
+      .text("--criterion", "SPEC", RT_FIELD(criterion),
+            "KIND[:LIMIT][,double:P] as in tests/course_scenes.txt, KIND hw12, hw3 or block: " +
+                criterion_help())
+      .default_is("the line of --scenes-list whose REFERENCE ends REFERENCE.png")
+      .text("--scenes-list", "FILE", RT_FIELD(scenes_list),
+            "the list of course scenes, images and criteria")
+      .flag("--double", RT_FIELD(double_precision),
+            "the render computed in double (RT_TEST_PRECISION=double): the criterion's "
+            "double:P share of identical pixels applies");
+  return t;
+}
+
+Table make_summary() {
+  return Table("compare summary", "compare summary IMAGE",
+               "Size, range, NaN and Inf counts and mean per channel of a PNG, EXR, HDR or "
+               "moment file, and the samples when moments exist.");
+}
+
 const char* kIntro =
-    R"(usage: compare SUBCOMMAND A B [options]   (compare SUBCOMMAND --help: its options)
+    R"(usage: compare SUBCOMMAND FILES [options]   (compare SUBCOMMAND --help: its options)
 
 Checks a render B against a render A. A and B are moment files written by
 `raytracer --moments` (<image>.moments.exr; the PNG's name is accepted too) or, for
@@ -177,6 +222,30 @@ const char* kDiff =
    downsample. Exit status 0 (without --moments).
 )";
 
+const char* kReport =
+    R"(report A B --out FILE.html|DIR   One self-contained HTML page (images embedded)
+   for a person: A, B and the difference |B - A| (largest channel, viridis colour
+   map) side by side, the worst tiles enlarged, their figures, and a verdict in
+   words: "identical" (same pixels and means), "within noise" (the statistical test
+   passes: paired for equal seeds, else welch, on the tiles, when both have moment
+   files beside them), "biased here" (naming the rejected tiles), or for images
+   without moments a difference summary (largest, mean, share of pixels differing).
+   Exit status 0 (the page is written), 2 on bad input.
+)";
+
+const char* kReference =
+    R"(reference RENDER.png REFERENCE.png   Checks an existing render against the course's
+   official image by the criterion the reference tests use (tests/reference_check.cpp
+   renders and applies the same code), without rendering again. The criterion is
+   looked up in tests/course_scenes.txt by REFERENCE's path unless --criterion
+   gives it. Exit status 0 PASS, 1 FAIL, 2 bad input.
+)";
+
+const char* kSummary =
+    R"(summary IMAGE   Size, range, NaN and Inf counts and mean per channel; for a moment
+   file (or a PNG with one beside it) also the samples per pixel and the variances.
+)";
+
 const char* kMaps = R"(The images, as PNG (--out-dir works with every subcommand):
   DIR/<sub>-diff.png    welch/paired: 128 + gain * (B - A) per channel (mid-gray is
                         equal); exact: relative distance difference, white at the
@@ -193,12 +262,26 @@ where <sub> is welch, paired, exact or diff.
 
 const rt::OptionTable<CompareOptions>* subcommand_table(const std::string& name) {
   static const Table welch = make_welch(), paired = make_paired(), exact = make_exact(),
-                     diff = make_diff();
+                     diff = make_diff(), report = make_report(), reference = make_reference(),
+                     summary = make_summary();
+  if (name == "report") return &report;
+  if (name == "reference") return &reference;
+  if (name == "summary") return &summary;
   if (name == "welch") return &welch;
   if (name == "paired") return &paired;
   if (name == "exact") return &exact;
   if (name == "diff") return &diff;
   return nullptr;
+}
+
+CompareOptions parse_subcommand(const char* sub, int argc, char** argv,
+                                std::vector<std::string>* files, size_t count) {
+  const Table& table = *subcommand_table(sub);
+  CompareOptions o = table.defaults();
+  *files = table.parse_or_exit(argc, argv, &o, 2);
+  if (files->size() != count)
+    table.usage_error(std::string(sub) + (count == 1 ? " takes one file" : " takes two files"));
+  return o;
 }
 
 std::string compare_help() {
@@ -210,7 +293,11 @@ std::string compare_help() {
   h += "\n" + (kExact + subcommand_table("exact")->section_help("exact"));
   const Table& diff = *subcommand_table("diff");
   h += "\n" + (kDiff + diff.section_help("diff"));
-  h += std::string("\nOptions of welch, paired and diff --moments:\n") +
+  const Table& report = *subcommand_table("report");
+  h += "\n" + (kReport + report.section_help("report"));
+  h += "\n" + (kReference + subcommand_table("reference")->section_help("reference"));
+  h += std::string("\n") + kSummary;
+  h += std::string("\nOptions of welch, paired, diff --moments and report:\n") +
        welch.section_help(kVerdict);
   h += std::string("\nImages for a person:\n") + welch.section_help(kImages) + kMaps;
   return h;

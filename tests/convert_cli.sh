@@ -60,7 +60,7 @@ grep -q 'no camera: a default one' warnings.txt || fail "no warning for the defa
 grep -q 'partial transparency' warnings.txt || fail "no warning for d 0.2"
 [ "$(grep -c '<Camera ' box.xml)" = 1 ] || fail "expected one default camera"
 "$rt" box.xml --device cpu --threads 1 --resolution-scale 0.1 --quiet || fail "render of box.xml"
-[ -f camera0.png ] || fail "no camera0.png"
+[ -f box.png ] || fail "no box.png (renders are named after the imported file)"
 
 # Export the imported scene to every format; the glTF goes back to XML.
 for out in box.glb box.obj2.obj box.pbrt; do

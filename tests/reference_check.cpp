@@ -3,10 +3,8 @@
 // pixels (or of 4x4 blocks): each metric over a regular subset estimates the same metric
 // over the whole image, at full resolution and at the scene's own sample count.
 //
-// The 8-bit conversion truncates as the course's renderer does, so the deterministic
-// images (hw1, hw2: one sample per pixel) are expected byte-identical but for a few
-// pixels; the thresholds (reference_check --help) sit just outside what the CPU reference
-// reaches on every course image (README, "Reference images").
+// The criterion and its thresholds are compare/reference_criterion.h, which
+// `compare reference` applies to an existing render.
 //
 // A camera with <Tonemap> writes radiance to an EXR and its PNG through the photographic
 // operator, whose log-average and burn-out need the whole image: the subset's pixels are
@@ -22,24 +20,21 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "compare/image_metrics.h"
+#include "compare/reference_criterion.h"
 #include "device/cpu/cpu_kernel.h"
-#include "prepare/flat_scene.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
-#include "compare/image_metrics.h"
-#include "io/png_io.h"
 #include "integrator/render.h"
+#include "io/png_io.h"
+#include "prepare/flat_scene.h"
 
 namespace {
 
 struct Args {
-  std::string criterion = "hw12";
+  cmp::ReferenceCriterion criterion;
   int camera = 0;
-  double budget = 0;                // Samples to spend; 0: the whole image.
-  double min_identical = 0;         // Percent of byte-identical pixels; 0: the criterion's own.
-  double double_min_identical = 0;  // The same when rendering in double; 0: min_identical.
-  double max_bias = -1;             // Largest |mean bias| of hw3, levels; < 0: the criterion's own.
-  double max_block_mae = -1;        // Largest 4x4-downsampled MAE of `block`; < 0: its own.
+  double budget = 0;  // Samples to spend; 0: the whole image.
   rt::Quantize quantize = rt::Quantize::kTruncate;
   rt::RenderOptions render;
 };
@@ -61,28 +56,6 @@ struct PixelEncoder {
   }
 };
 
-// The thresholds, in 8-bit levels: what the CPU reference reaches on every course image,
-// with a margin (README, "Reference images"). --help is written from them.
-// hw12: deterministic images (one sample per pixel), compared pixel for pixel.
-constexpr double kHw12Mae = 0.2, kHw12Over8 = 0.005, kHw12Identical = 99.9;
-// hw3: noisy images, compared after a 4x4 box downsample, and by their mean bias.
-constexpr double kHw3DownMae = 0.6, kHw3Mae = 2.0, kHw3Bias = 0.05;
-// block: images whose reference is itself a noisy render (hw6 object lights, 100 spp),
-// which two correct renders do not match pixel for pixel: only the 4x4-downsampled MAE
-// (issue 16's measure and target) and the mean bias are checked.
-constexpr double kBlockDownMae = 2.0, kBlockBias = 0.3;
-
-std::string criterion_help() {
-  char buf[600];
-  std::snprintf(buf, sizeof buf,
-                "hw12 (one sample per pixel, deterministic): MAE <= %g levels, <= %g %% of pixels "
-                "off by more than 8, and --min-identical; hw3 (noisy): after a 4x4 box downsample "
-                "MAE <= %g, full-resolution MAE <= %g, |mean bias| <= %g; block (a noisy "
-                "reference): after a 4x4 box downsample MAE <= --max-block-mae, |mean bias| <= %g",
-                kHw12Mae, 100 * kHw12Over8, kHw3DownMae, kHw3Mae, kHw3Bias, kBlockBias);
-  return buf;
-}
-
 rt::OptionTable<Args> make_table() {
   rt::OptionTable<Args> t(
       "reference_check", "reference_check SCENE.xml REFERENCE.png [options]",
@@ -93,22 +66,22 @@ rt::OptionTable<Args> make_table() {
       .choice("--criterion",
               std::vector<std::pair<std::string, std::string>>{
                   {"hw12", "hw12"}, {"hw3", "hw3"}, {"block", "block"}},
-              RT_FIELD(criterion), criterion_help())
-      .real("--min-identical", "P", rt::Range::closed(0, 100), RT_FIELD(min_identical),
+              RT_FIELD(criterion.kind), cmp::criterion_help())
+      .real("--min-identical", "P", rt::Range::closed(0, 100), RT_FIELD(criterion.min_identical),
             "percent of pixels that must be byte-identical to the reference")
-      .default_is(std::to_string(kHw12Identical).substr(0, 4) + " for hw12, none for hw3")
+      .default_is(std::to_string(cmp::kHw12Identical).substr(0, 4) + " for hw12, none for hw3")
       .real("--double-min-identical", "P", rt::Range::closed(0, 100),
-            RT_FIELD(double_min_identical),
+            RT_FIELD(criterion.double_min_identical),
             "percent of pixels that must be byte-identical when rendering in double "
             "(RT_TEST_PRECISION=double): the course renders in float, so double lands on "
             "the other side of more of its rounding decisions (tests/course_scenes.txt)")
       .default_is("--min-identical")
-      .real("--max-bias", "B", rt::Range::closed(0, 255), RT_FIELD(max_bias),
+      .real("--max-bias", "B", rt::Range::closed(0, 255), RT_FIELD(criterion.max_bias),
             "largest |mean bias| (render minus reference) an hw3 image may have, in levels")
-      .default_is(std::to_string(kHw3Bias).substr(0, 4))
-      .real("--max-block-mae", "M", rt::Range::closed(0, 255), RT_FIELD(max_block_mae),
+      .default_is(std::to_string(cmp::kHw3Bias).substr(0, 4))
+      .real("--max-block-mae", "M", rt::Range::closed(0, 255), RT_FIELD(criterion.max_block_mae),
             "largest 4x4-downsampled MAE a `block` image may have, in levels")
-      .default_is(std::to_string(kBlockDownMae).substr(0, 3))
+      .default_is(std::to_string(cmp::kBlockDownMae).substr(0, 3))
       .real("--budget", "SAMPLES", rt::Range::positive(), RT_FIELD(budget),
             "render a regular subset of pixels (or of 4x4 blocks for hw3) costing about this "
             "many samples")
@@ -192,7 +165,7 @@ int main(int argc, char** argv) {
                    ref.width, ref.height);
       return 1;
     }
-    bool hw3 = a.criterion == "hw3", by_block = a.criterion == "block";
+    bool hw3 = a.criterion.kind == "hw3", by_block = a.criterion.kind == "block";
     int block = hw3 || by_block ? 4 : 1;
     double total = static_cast<double>(cam.width) * cam.height * cam.samples;
     int stride =
@@ -213,33 +186,14 @@ int main(int argc, char** argv) {
     }
     rt::Image8 ref_subset;
     rt::Image8 img = render_subset(flat, in_double, block, stride, &ref_subset, ref, encoder);
-    rt::ImageDiff full = rt::diff_images(ref_subset, img, 8);
-    rt::ImageDiff down = rt::diff_images(rt::downsample(ref_subset, 4), rt::downsample(img, 4), 8);
-    // Signed mean of render minus reference: a conversion one level off shows here first.
-    double bias = 0;
-    for (size_t i = 0; i < img.rgb.size(); ++i) bias += img.rgb[i] - ref_subset.rgb[i];
-    bias /= std::max<size_t>(1, img.rgb.size());
-    std::printf(
-        "%s: %dx%d, %d spp, stride %d (%.1f %% of the pixels): MAE %.3f, over 8: %.3f %%, "
-        "max %d, identical %.3f %% (%ld differ), bias %+.3f | 4x4 downsampled: MAE %.3f, over 8: "
-        "%.3f %%\n",
-        files[1].c_str(), cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride),
-        full.mae, 100 * full.frac_over, full.max_abs, 100 * full.frac_identical,
-        std::lround((1 - full.frac_identical) * img.width * img.height), bias, down.mae,
-        100 * down.frac_over);
-    double min_identical = a.min_identical > 0 ? a.min_identical
-                           : hw3 || by_block   ? 0
-                                               : kHw12Identical;
-    if (in_double && a.double_min_identical > 0) min_identical = a.double_min_identical;
-    bool ok = hw3 ? (down.mae <= kHw3DownMae && full.mae <= kHw3Mae &&
-                     std::abs(bias) <= (a.max_bias >= 0 ? a.max_bias : kHw3Bias))
-                  : (full.mae <= kHw12Mae && full.frac_over <= kHw12Over8);
-    if (by_block)
-      ok = down.mae <= (a.max_block_mae >= 0 ? a.max_block_mae : kBlockDownMae) &&
-           std::abs(bias) <= (a.max_bias >= 0 ? a.max_bias : kBlockBias);
-    ok = ok && 100 * full.frac_identical >= min_identical;
-    std::printf("%s (criterion %s)\n", ok ? "PASS" : "FAIL", a.criterion.c_str());
-    return ok ? 0 : 1;
+    cmp::ReferenceResult r =
+        cmp::check_reference(img, ref_subset, a.criterion, in_double);
+    char detail[160];
+    std::snprintf(detail, sizeof detail, "%dx%d, %d spp, stride %d (%.1f %% of the pixels)",
+                  cam.width, cam.height, cam.samples, stride, 100.0 / (stride * stride));
+    cmp::print_reference_result(files[1], detail, r, a.criterion,
+                                static_cast<long>(img.width) * img.height);
+    return r.pass ? 0 : 1;
   } catch (const std::exception& e) {
     // Scenes whose large PLY files could not be fetched (see SOURCES.md) are skipped.
     if (std::string(e.what()).find("cannot open") != std::string::npos) {

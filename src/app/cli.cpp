@@ -18,7 +18,10 @@ OptionTable<RenderOptions> make_device_table() {
               std::vector<std::pair<std::string, int>>{{"box", RT_FILTER_BOX},
                                                        {"gaussian", RT_FILTER_GAUSSIAN}},
               RT_FIELD(filter), "reconstruction filter")
-      .real("--filter-sigma", "S", Range::open(0, 100), RT_FIELD(filter_sigma),
+      // The weight at the support's corner (0.5 px from the centre on both axes, see
+      // RenderSample in cl/integrator/integrator.h) is exp(-0.25 / S^2); below S = 0.054 it
+      // is no longer a normal float (FLT_MIN = e^-87.3), so pixels turn black or NaN.
+      .real("--filter-sigma", "S", Range{0.054, 100, false, true}, RT_FIELD(filter_sigma),
             "standard deviation of the Gaussian filter, in pixels")
       .choice("--lens",
               std::vector<std::pair<std::string, int>>{{"square", RT_LENS_SQUARE},

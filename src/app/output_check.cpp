@@ -7,9 +7,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "util/errors.h"
+#include "io/image_output.h"
 #include "io/moments.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {
@@ -47,9 +48,12 @@ void check_outputs(const SceneDesc& scene, int camera, const std::string& output
   std::vector<Output> outputs;
   for (int c = 0; c < static_cast<int>(scene.cameras.size()); ++c) {
     if (camera >= 0 && c != camera) continue;
-    const fs::path png = fs::path(output_dir) / scene.cameras[c].image_name;
-    outputs.push_back({png, c, "image"});
-    if (moments) outputs.push_back({moments_path_for(png.string()), c, "moments file"});
+    // Every file the camera writes (src/app/render_job.cpp, write_outputs).
+    const fs::path image = fs::path(output_dir) / scene.cameras[c].image_name;
+    outputs.push_back({image, c, "image"});
+    if (scene.cameras[c].tonemap && is_exr_path(image.string()))
+      outputs.push_back({tonemap_path_for(image.string()), c, "tone-mapped image"});
+    if (moments) outputs.push_back({moments_path_for(image.string()), c, "moments file"});
   }
   std::map<fs::path, const Output*> seen;
   for (const Output& o : outputs) {
@@ -71,6 +75,13 @@ void check_outputs(const SceneDesc& scene, int camera, const std::string& output
            scene.cameras[other.camera].element + "): two outputs share '" + shorten(name) + "'");
     }
     std::error_code ec;
+    // A relative ImageName ("renders/a.png") writes into a folder below the output folder,
+    // which must be there: the renderer creates no folders.
+    const fs::path folder = o.path.parent_path();
+    if (!fs::is_directory(folder, ec))
+      fail("would go into '" + shorten(folder.string(), 200) + "', which " +
+           (fs::exists(folder, ec) ? "is not a folder" : "does not exist") +
+           " (create it, or choose the output folder with --output-dir)");
     if (!fs::exists(o.path, ec)) continue;
     if (fs::is_directory(o.path, ec)) fail("'" + shorten(o.path.string()) + "' is a directory");
     for (const std::string& input : scene.inputs)

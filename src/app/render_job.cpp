@@ -95,14 +95,13 @@ void write_outputs(const CliOptions& opt, const std::string& scene_path, int cam
   // hw5: a camera with <Tonemap> whose image is HDR also gets the photographic operator's
   // 8-bit image of the same film, beside it with the extension .png.
   if (cam.tonemap && is_exr_path(out)) {
-    std::filesystem::path png = out;
-    png.replace_extension(".png");
+    const std::string png = tonemap_path_for(out);
     ImageF film;
     film.width = r.width;
     film.height = r.height;
     film.max_value = 0.0f;
     film.pixels = r.rgb();
-    write_png(png.string(), TonemapPhotographic(film, cam.tonemap_params));
+    write_png(png, TonemapPhotographic(film, cam.tonemap_params));
   }
   if (opt.moments) {
     MomentInfo info{

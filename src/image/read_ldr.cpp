@@ -1,7 +1,5 @@
 #include "image/read_ldr.h"
 
-#include <jpeglib.h>
-
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
@@ -9,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "image/jpeg_error.h"
 #include "io/png_io.h"
 
 namespace rt {
@@ -18,28 +17,18 @@ namespace {
   throw std::runtime_error(path + ": cannot read image: " + why);
 }
 
-// libjpeg reports fatal errors through a callback that must not return; it jumps back
-// to the decoder with the message kept for the one-line error.
-struct JpegError {
-  jpeg_error_mgr mgr;
-  std::jmp_buf jump;
-  char message[JMSG_LENGTH_MAX];
-};
-
-void on_jpeg_error(j_common_ptr cinfo) {
-  JpegError* err = reinterpret_cast<JpegError*>(cinfo->err);
-  (*cinfo->err->format_message)(cinfo, err->message);
-  std::longjmp(err->jump, 1);
+// Level -1 is a warning: damaged data (a truncated file, a corrupt segment) that libjpeg
+// would decode with the missing part grey. A texture so damaged gives a silently wrong
+// image, so the warning is an error too. Levels 0 and up are trace messages.
+void on_jpeg_message(j_common_ptr cinfo, int level) {
+  if (level < 0) (*cinfo->err->error_exit)(cinfo);
 }
-
-void on_jpeg_warning(j_common_ptr, int) {}  // Recoverable damage decodes as it can.
 
 ImageF read_jpeg(const std::string& path, std::FILE* file) {
   jpeg_decompress_struct cinfo;
   JpegError err;
-  cinfo.err = jpeg_std_error(&err.mgr);
-  err.mgr.error_exit = on_jpeg_error;
-  err.mgr.emit_message = on_jpeg_warning;
+  cinfo.err = jpeg_error_jump(&err);
+  err.mgr.emit_message = on_jpeg_message;
   // Declared before setjmp so a longjmp leaves it in a defined state.
   ImageF* volatile out = new ImageF;
   std::unique_ptr<ImageF> guard(out);

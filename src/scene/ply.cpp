@@ -327,11 +327,11 @@ class Parser {
 std::string read_file(const std::string& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw input_error(path, "file", "cannot open '" + path + "': " + ec.message());
+  if (ec) throw input_error(path, "file", "cannot open: " + ec.message());
   std::string data(size, '\0');
   std::ifstream in(path, std::ios::binary);
   if (!in.read(data.data(), static_cast<std::streamsize>(size))) {
-    throw input_error(path, "file", "cannot read '" + path + "'");
+    throw input_error(path, "file", "cannot read");
   }
   return data;
 }

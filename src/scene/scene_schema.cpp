@@ -4,7 +4,9 @@
 #include <map>
 #include <utility>
 
+#include "scene/loader/shared_ids.h"
 #include "util/errors.h"
+#include "util/spelling.h"
 #include "xml_text.h"
 
 namespace rt {
@@ -216,6 +218,18 @@ const Rule* find_rule(const std::string& context, const char* name, const char* 
   return nullptr;
 }
 
+// "; did you mean <Radius>?" for an unknown element (or "; did you mean plyFile?" for an
+// attribute, `name` then starting with '@') near one the context knows; "" otherwise.
+std::string suggestion(const std::string& context, const std::string& name) {
+  const bool attr = !name.empty() && name[0] == '@';
+  std::vector<std::string> known;
+  for (const Rule& r : rules())
+    if (context == r.context && (r.name[0] == '@') == attr) known.push_back(r.name);
+  const std::string near = closest_name(name, known);
+  if (near.empty()) return "";
+  return attr ? "; did you mean " + near.substr(1) + "?" : "; did you mean <" + near + ">?";
+}
+
 bool is_blank(const char* s) {
   for (; s && *s; ++s)
     if (!std::strchr(" \t\r\n", *s)) return false;
@@ -282,7 +296,8 @@ class StructureCheck {
       const std::string shown = shorten(a->Name()) + "=\"" + shorten(a->Value()) + "\"";
       if (!r)
         warn_once(context + "/" + e->Name() + name, path_of(e),
-                  "unknown attribute " + shown + " (line " + line(e) + "), ignored");
+                  "unknown attribute " + shown + " (line " + line(e) + "), ignored" +
+                      suggestion(context, name));
       else if (r->support == Support::kUnsupported)
         fail(e, "attribute " + shown + " (line " + line(e) + ") is not supported: " + r->wrong);
     }
@@ -306,8 +321,9 @@ class StructureCheck {
       if (!c) continue;
       const Rule* r = find_rule(context, c->Name(), nullptr);
       if (!r) {
-        warn_once(context + "/" + c->Name(), path_of(c),
-                  "unknown element (line " + line(c) + "), ignored");
+        warn_once(
+            context + "/" + c->Name(), path_of(c),
+            "unknown element (line " + line(c) + "), ignored" + suggestion(context, c->Name()));
         continue;
       }
       if (r->support == Support::kUnsupported) {
@@ -321,7 +337,15 @@ class StructureCheck {
                       " (only one is allowed)");
       }
       if (const char* id = c->Attribute("id")) {
-        auto [it, first] = ids.emplace(std::make_pair(std::string(c->Name()), std::string(id)), c);
+        // Kinds whose shared ids are refused are one namespace; the others keep their own.
+        const SharedIds* group = shared_ids_of(context, c->Name());
+        const bool shared = group && group->refused;
+        const std::string space = shared ? std::string("#") + group->kinds[0] : c->Name();
+        auto [it, first] = ids.emplace(std::make_pair(space, std::string(id)), c);
+        if (!first && shared && std::strcmp(it->second->Name(), c->Name()) != 0)
+          fail(c, "id '" + shorten(id) + "' is also the id of the <" + it->second->Name() +
+                      "> at line " + line(it->second) + ": " + group->reference +
+                      " could mean either");
         if (!first && !r->ids_repeat)
           fail(c, "id '" + shorten(id) + "' is defined twice, at lines " + line(it->second) +
                       " and " + line(c));
@@ -344,6 +368,17 @@ class StructureCheck {
 std::vector<std::string> check_scene_structure(const tinyxml2::XMLDocument& doc,
                                                const std::string& file) {
   return StructureCheck(file).run(doc);
+}
+
+std::string misspelling_hint(const tinyxml2::XMLElement* parent, const char* missing) {
+  for (auto* c = parent->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    bool known = false;
+    for (const Rule& r : rules()) known = known || std::strcmp(r.name, c->Name()) == 0;
+    if (!known && closest_name(c->Name(), {missing}) == missing)
+      return "; <" + shorten(c->Name()) + "> at line " + line(c) +
+             " is not a known element: did you mean <" + missing + ">?";
+  }
+  return "";
 }
 
 }  // namespace rt

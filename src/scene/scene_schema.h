@@ -16,10 +16,17 @@ namespace rt {
 //   texture, a BRDF, a directional light or tone mapping) throws rt::InputError, unless it
 //   is empty (the course's older files carry an empty <Textures/>);
 // - a repeated single-valued element, or two definitions of the same kind with the same id,
-//   throws rt::InputError naming both lines, except where the table lets ids repeat;
+//   throws rt::InputError naming both lines, except where the table lets ids repeat; so do
+//   two kinds with one id where a reference could mean either (scene/loader/shared_ids.h);
 // - unknown elements and attributes, stray text, a second <Scene> and repeated ids of kinds
-//   nothing refers to give one warning per kind, returned in file order.
+//   nothing refers to give one warning per kind, returned in file order; an unknown name
+//   near a known one adds "did you mean <Radius>?".
 std::vector<std::string> check_scene_structure(const tinyxml2::XMLDocument& doc,
                                                const std::string& file);
+
+// For "missing <Radius>": "; <Radious> at line 5 is not a known element: did you mean
+// <Radius>?" when a child of `parent` that no rule knows is a likely misspelling of
+// `missing`; "" otherwise.
+std::string misspelling_hint(const tinyxml2::XMLElement* parent, const char* missing);
 
 }  // namespace rt

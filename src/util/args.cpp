@@ -1,5 +1,8 @@
 #include "util/args.h"
 
+#include "util/spelling.h"
+
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -99,8 +102,12 @@ long parse_whole(const std::string& value, const Range& range) {
 double parse_number(const std::string& value, const Range& range) {
   char* end = nullptr;
   double v = std::strtod(value.c_str(), &end);
-  if (value.empty() || *end || !std::isfinite(v) || !range.contains(v))
-    throw UsageError("is not " + range.describe(false));
+  if (value.empty() || *end) throw UsageError("is not " + range.describe(false));
+  // "a positive number" leaves the upper end unsaid: a value beyond it gets it named.
+  if (v > 0 && v >= range.hi && !range.contains(v) &&
+      range.describe(false).find(format_bound(range.hi, false)) == std::string::npos)
+    throw UsageError("is too large: the limit is " + format_bound(range.hi, false));
+  if (!std::isfinite(v) || !range.contains(v)) throw UsageError("is not " + range.describe(false));
   return v;
 }
 
@@ -156,6 +163,32 @@ void OptionText::usage_error(const std::string& what) const {
   std::exit(2);
 }
 
+std::string OptionText::suggest(const std::string& typed) const {
+  std::vector<std::string> names;
+  for (const OptionInfo& o : infos_)
+    for (const std::string& n : o.names) names.push_back(n);
+  std::string near = closest_name(typed, names);
+  if (!near.empty()) return near;
+  // Then by what it does: the first word of each option's help ("samples per pixel" is
+  // --spp), for a name typed from the meaning ("--sammples").
+  std::vector<std::string> words;
+  for (const OptionInfo& o : infos_) {
+    std::string w;
+    for (char c : o.help) {
+      if (!std::isalpha(static_cast<unsigned char>(c))) break;
+      w += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    words.push_back(w.size() >= 4 ? w : "");
+  }
+  const std::string bare = typed.substr(typed.find_first_not_of('-') == std::string::npos
+                                            ? typed.size()
+                                            : typed.find_first_not_of('-'));
+  near = bare.size() >= 4 ? closest_name(bare, words) : "";
+  for (size_t k = 0; k < words.size() && !near.empty(); ++k)
+    if (words[k] == near) return infos_[k].names[0];
+  return "";
+}
+
 std::vector<std::string> OptionText::walk(
     int argc, char** argv, int first, const std::function<void(size_t, const std::string*)>& apply,
     std::string* exit_text) const {
@@ -186,7 +219,11 @@ std::vector<std::string> OptionText::walk(
       for (const std::string& n : infos_[k].names)
         if (n == name) found = k;
     if (found == infos_.size()) {
-      if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+      if (a.size() > 1 && a[0] == '-') {
+        const std::string near = suggest(name);
+        throw UsageError("unknown option '" + a + "'" +
+                         (near.empty() ? "" : "; did you mean " + near + "?"));
+      }
       positional.push_back(a);
       continue;
     }

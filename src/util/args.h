@@ -93,6 +93,9 @@ class OptionText {
   // per environment variable.
   std::string markdown() const;
   [[noreturn]] void usage_error(const std::string& what) const;
+  // The option an unknown `typed` name most likely meant ("--spp" for "--sammples",
+  // "--quiet" for "--quite"); "" when none is near.
+  std::string suggest(const std::string& typed) const;
 
  protected:
   // Walks argv[first, argc): "--name value", "--name=value" and switches anywhere among

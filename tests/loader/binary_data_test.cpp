@@ -110,7 +110,7 @@ TEST_F(BinaryData, TexCoordDataFromAFile) {
 TEST_F(BinaryData, BadFilesAreOneLine) {
   write("geo/faces.bin", Records(2, kFaces));
   // Missing.
-  expect_error(binary_scene(), {"VertexData", "binaryFile 'geo/vertices.bin'", "cannot open"});
+  expect_error(binary_scene(), {"VertexData", "binaryFile '", "geo/vertices.bin': cannot open"});
   // Truncated: the count says 8 vertices, the file holds 7.
   write("geo/vertices.bin", Records(8, std::vector<float>(kVertices.begin(), kVertices.end() - 3)));
   expect_error(binary_scene(), {"VertexData", "vertices.bin", "truncated",

@@ -107,7 +107,8 @@ std::string slurp(const fs::path& p) {
 
 namespace {
 
-// Runs `load`, expecting an InputError of one line that starts with "name: " and contains
+// Runs `load`, expecting an InputError of one line that starts with "name: " (or "name:LINE: "
+// for malformed XML) and contains
 // every one of `parts`; returns its message.
 template <class Load>
 std::string expect_error_of(const Load& load, const std::string& name,
@@ -119,7 +120,7 @@ std::string expect_error_of(const Load& load, const std::string& name,
   } catch (const InputError& e) {
     std::string msg = e.what();
     EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
-    EXPECT_EQ(msg.rfind(name + ": ", 0), 0u) << "does not start with the file: " << msg;
+    EXPECT_EQ(msg.rfind(name + ":", 0), 0u) << "does not start with the file: " << msg;
     for (const auto& part : parts)
       EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' missing in: " << msg;
     return msg;

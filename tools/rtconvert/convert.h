@@ -52,11 +52,43 @@ struct ConvertError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Per-mesh names for the files written beside the XML ("<stem>_mesh3.ply").
+// The file behind one image a TextureMapDesc::image indexes. rtconvert copies or
+// references image files and never decodes them for the output, so scene.images may be
+// empty; this list is what the writers use.
+struct ImageFile {
+  std::string path;      // Absolute, or relative to the current folder; empty with `bytes`.
+  std::string bytes;     // An image embedded in the input (glTF, FBX): written beside the output.
+  std::string name;      // File name for `bytes` ("albedo.png").
+  bool degamma = false;  // The TextureMap's degamma="true".
+};
+
+// Per-mesh names for the files written beside the XML ("<stem>_files/mesh3_body.ply").
 struct ImportedScene {
   rt::SceneDesc scene;
   std::vector<std::string> mesh_names;  // Parallel to scene.meshes; may be empty.
+  std::vector<ImageFile> images;        // Indexed by TextureMapDesc::image.
 };
+
+// The folder beside OUT.xml that holds its PLY meshes and extracted images: OUT_files.
+std::string side_folder(const std::string& xml_path);
+
+// The image files of a course scene, indexed as its TextureMapDesc::image (the loader keeps
+// the decoded images only): read again from the <Textures> of `xml_path`.
+std::vector<ImageFile> course_image_files(const std::string& xml_path, const rt::SceneDesc& s);
+
+// One warning per material library (mtllib) an OBJ file names that does not exist: Assimp
+// then gives every material its default grey without a word.
+void warn_missing_material_libraries(const std::string& obj, Report& report);
+
+// Refuses (ConvertError) an output in a folder that does not exist, and an output that is
+// the input: the same file through another path, a link or, on a file system that folds
+// case, another letter case.
+void check_not_input(const std::string& input, const std::string& output);
+
+// Warnings for what the target format cannot carry (format "glb", "obj", "pbrt", "xml"),
+// one line per feature, naming it.
+void warn_dropped(const rt::SceneDesc& s, const std::string& path, const std::string& format,
+                  Report& report);
 
 // Import: any file Assimp reads. glTF files written by export_with_assimp carry the
 // course's exact values in `extras` (see course_extras.h) and come back bit for bit, unless
@@ -70,8 +102,10 @@ void write_course_xml(const ImportedScene& in, const std::string& xml_path, Repo
 
 // Export through Assimp: format "glb2" (binary glTF 2.0, with cameras, lights and extras
 // added to its JSON) or "obj" (OBJ + MTL).
+// `images`: the files of the scene's image textures (course_image_files).
 void export_with_assimp(const rt::SceneDesc& scene, const std::string& path,
-                        const std::string& format, Report& report);
+                        const std::string& format, Report& report,
+                        const std::vector<ImageFile>& images = {});
 
 // Writes `content` to a temporary file beside `path` and renames it: an interrupted or
 // failed conversion never leaves a half-written file under the output's name.

@@ -34,7 +34,15 @@ json camera_to_json(const rt::CameraDesc& c) {
           {"resolution", {c.width, c.height}},
           {"numSamples", c.samples},
           {"apertureSize", c.aperture},
-          {"focusDistance", c.focus_distance}};
+          {"focusDistance", c.focus_distance},
+          {"leftHanded", c.left_handed},
+          {"tonemap", c.tonemap},
+          {"tonemapKey", c.tonemap_params.key},
+          {"tonemapBurnPercent", c.tonemap_params.burn_percent},
+          {"tonemapSaturation", c.tonemap_params.saturation},
+          {"tonemapGamma", c.tonemap_params.gamma},
+          {"pathTracing", c.path_tracing},
+          {"pathFlags", c.path_flags}};
 }
 
 rt::CameraDesc camera_from_json(const json& j) {
@@ -54,17 +62,32 @@ rt::CameraDesc camera_from_json(const json& j) {
   c.samples = j.at("numSamples").get<int>();
   c.aperture = j.at("apertureSize").get<double>();
   c.focus_distance = j.at("focusDistance").get<double>();
+  // Files of rtconvert before these were kept lack them: the loader's defaults.
+  c.left_handed = j.value("leftHanded", false);
+  c.tonemap = j.value("tonemap", false);
+  c.tonemap_params.key = j.value("tonemapKey", c.tonemap_params.key);
+  c.tonemap_params.burn_percent = j.value("tonemapBurnPercent", c.tonemap_params.burn_percent);
+  c.tonemap_params.saturation = j.value("tonemapSaturation", c.tonemap_params.saturation);
+  c.tonemap_params.gamma = j.value("tonemapGamma", c.tonemap_params.gamma);
+  c.path_tracing = j.value("pathTracing", false);
+  c.path_flags = j.value("pathFlags", 0);
   return c;
 }
 
 json material_to_json(const Material& m) {
   const std::string type = material_type_name(m.type);
-  return {
-      {"type", type.empty() ? "plain" : type},    {"ambientReflectance", to_json(m.ambient)},
-      {"diffuseReflectance", to_json(m.diffuse)}, {"specularReflectance", to_json(m.specular)},
-      {"mirrorReflectance", to_json(m.mirror)},   {"absorptionCoefficient", to_json(m.absorption)},
-      {"phongExponent", m.phong_exponent},        {"refractionIndex", m.refraction_index},
-      {"absorptionIndex", m.absorption_index},    {"roughness", m.roughness}};
+  return {{"type", type.empty() ? "plain" : type},
+          {"ambientReflectance", to_json(m.ambient)},
+          {"diffuseReflectance", to_json(m.diffuse)},
+          {"specularReflectance", to_json(m.specular)},
+          {"mirrorReflectance", to_json(m.mirror)},
+          {"absorptionCoefficient", to_json(m.absorption)},
+          {"phongExponent", m.phong_exponent},
+          {"refractionIndex", m.refraction_index},
+          {"absorptionIndex", m.absorption_index},
+          {"roughness", m.roughness},
+          {"brdf", m.brdf},
+          {"brdfFlags", m.brdf_flags}};
 }
 
 Material material_from_json(const json& j) {
@@ -79,6 +102,12 @@ Material material_from_json(const json& j) {
   m.refraction_index = j.at("refractionIndex").get<float>();
   m.absorption_index = j.at("absorptionIndex").get<float>();
   m.roughness = j.at("roughness").get<float>();
+  m.brdf = j.value("brdf", 0);
+  m.brdf_flags = j.value("brdfFlags", 0);
+  // The XML writer names the model and flags from these: anything else is malformed.
+  if (m.brdf < 0 || m.brdf > 4 || m.brdf_flags < 0 || m.brdf_flags > 3)
+    throw ConvertError("extras: material brdf " + std::to_string(m.brdf) + ", brdfFlags " +
+                       std::to_string(m.brdf_flags) + " name no BRDF of the course");
   return m;
 }
 
@@ -108,6 +137,31 @@ PointLight point_light_from_json(const json& j) {
   p.position = vec3d_from(j.at("position"));
   p.intensity = float3_from(j.at("intensity"));
   return p;
+}
+
+json device_light_to_json(const Light& l) {
+  return {{"type", l.type == RT_LIGHT_SPOT ? "spot" : "directional"},
+          {"position", to_json(l.position)},
+          {"direction", to_json(l.normal)},
+          {"emission", to_json(l.emission)},
+          {"cosFalloff", l.param0},
+          {"cosCoverage", l.param1}};
+}
+
+Light device_light_from_json(const json& j) {
+  Light l{};
+  const std::string type = j.at("type").get<std::string>();
+  if (type != "spot" && type != "directional")
+    throw ConvertError("extras: light type '" + type + "' is neither spot nor directional");
+  l.type = type == "spot" ? RT_LIGHT_SPOT : RT_LIGHT_DIRECTIONAL;
+  l.position = float3_from(j.at("position"));
+  l.normal = float3_from(j.at("direction"));
+  l.emission = float3_from(j.at("emission"));
+  if (l.type == RT_LIGHT_SPOT) {
+    l.param0 = j.at("cosFalloff").get<float>();
+    l.param1 = j.at("cosCoverage").get<float>();
+  }
+  return l;
 }
 
 json settings_to_json(const rt::SceneDesc& s) {
@@ -162,14 +216,31 @@ json read_gltf_json(const std::string& path) {
   return j;
 }
 
-void rewrite_glb_json(const std::string& path, const json& gltf) {
+void rewrite_glb_json(const std::string& path, json gltf, const std::vector<std::string>& blobs) {
   std::string bytes = read_all(path);
   if (bytes.size() < 20 || u32(bytes, 0) != kGlbMagic || u32(bytes, 16) != kChunkJson)
     throw ConvertError(path + ": Assimp wrote no GLB JSON chunk");
   std::string rest = bytes.substr(20 + u32(bytes, 12));  // The binary chunk, if any.
+  auto put = [](std::string& out, uint32_t v) { out.append(reinterpret_cast<char*>(&v), 4); };
+  if (!blobs.empty()) {
+    // The binary chunk is buffer 0; the blobs go after its data, each 4-byte aligned.
+    std::string data = rest.size() >= 8 ? rest.substr(8, u32(rest, 0)) : std::string();
+    if (!gltf.contains("buffers") || gltf["buffers"].empty()) gltf["buffers"] = {json::object()};
+    for (const std::string& blob : blobs) {
+      while (data.size() % 4) data += '\0';
+      gltf["bufferViews"].push_back(
+          {{"buffer", 0}, {"byteOffset", data.size()}, {"byteLength", blob.size()}});
+      data += blob;
+    }
+    while (data.size() % 4) data += '\0';
+    gltf["buffers"][0]["byteLength"] = data.size();
+    rest.clear();
+    put(rest, static_cast<uint32_t>(data.size()));
+    put(rest, 0x004E4942);  // "BIN"
+    rest += data;
+  }
   std::string text = gltf.dump();
   while (text.size() % 4) text += ' ';  // Chunks are 4-byte aligned, JSON padded with spaces.
-  auto put = [](std::string& out, uint32_t v) { out.append(reinterpret_cast<char*>(&v), 4); };
   std::string out;
   put(out, kGlbMagic);
   put(out, 2);
@@ -178,6 +249,21 @@ void rewrite_glb_json(const std::string& path, const json& gltf) {
   put(out, kChunkJson);
   out += text + rest;
   write_file_atomically(path, out);
+}
+
+std::string read_glb_view(const std::string& path, const json& gltf, int view) {
+  const json& v = gltf.at("bufferViews").at(view);
+  if (v.value("buffer", 0) != 0)
+    throw ConvertError(path + ": glTF bufferView " + std::to_string(view) + " is not in the GLB");
+  std::string bytes = read_all(path);
+  if (bytes.size() < 20 || u32(bytes, 0) != kGlbMagic)
+    throw ConvertError(path + ": glTF images outside a GLB container are not read");
+  size_t bin = 20 + u32(bytes, 12);
+  size_t offset = v.value("byteOffset", size_t{0}), length = v.at("byteLength").get<size_t>();
+  if (bin + 8 > bytes.size() || offset + length > u32(bytes, bin))
+    throw ConvertError(path + ": glTF bufferView " + std::to_string(view) +
+                       " lies outside the binary chunk");
+  return bytes.substr(bin + 8 + offset, length);
 }
 
 }  // namespace rtconvert

@@ -8,25 +8,29 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 
 #include "convert.h"
-#include "prepare/flat_scene.h"
 #include "gltf_export.h"
+#include "prepare/flat_scene.h"
 
 namespace rtconvert {
 namespace {
 
 // A unit sphere (smooth normals are its positions); spheres are kept exactly in extras.
+// Its seam lies at phi = atan2(z, x) = pi, where the course's spherical texture
+// coordinates u = (pi - phi) / (2 pi), v = theta / pi wrap, so they run on without a jump.
 rt::MeshDesc unit_sphere() {
   const int rings = 16, segments = 32;
   rt::MeshDesc m;
   m.smooth = true;
   for (int r = 0; r <= rings; ++r)
     for (int s = 0; s <= segments; ++s) {
-      double th = M_PI * r / rings, ph = 2 * M_PI * s / segments;
+      double th = M_PI * r / rings, ph = M_PI + 2 * M_PI * s / segments;
       m.positions.push_back(
           {std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)});
+      m.uvs.push_back({1.0 - static_cast<double>(s) / segments, static_cast<double>(r) / rings});
     }
   for (int r = 0; r < rings; ++r)
     for (int s = 0; s < segments; ++s) {
@@ -57,6 +61,14 @@ aiMesh* make_mesh(const rt::MeshDesc& desc, unsigned material, const std::string
       m->mNormals[i] = aiVector3D(static_cast<float>(n[i].x), static_cast<float>(n[i].y),
                                   static_cast<float>(n[i].z));
   }
+  // Assimp's texture origin is the bottom left (as OBJ's), the course's the top left.
+  if (!desc.uvs.empty()) {
+    m->mNumUVComponents[0] = 2;
+    m->mTextureCoords[0] = new aiVector3D[m->mNumVertices];
+    for (unsigned i = 0; i < m->mNumVertices; ++i)
+      m->mTextureCoords[0][i] = aiVector3D(static_cast<float>(desc.uvs[i][0]),
+                                           static_cast<float>(1.0 - desc.uvs[i][1]), 0);
+  }
   m->mNumFaces = static_cast<unsigned>(desc.triangles.size());
   m->mFaces = new aiFace[m->mNumFaces];
   for (unsigned f = 0; f < m->mNumFaces; ++f) {
@@ -69,13 +81,27 @@ aiMesh* make_mesh(const rt::MeshDesc& desc, unsigned material, const std::string
 }
 
 // The Blinn-Phong values as OBJ/MTL has them (Kd, Ks, Ka, Ns, Ni); glTF's native values
-// are written into the JSON later.
-aiMaterial* make_material(const Material& mat, size_t index) {
+// are written into the JSON later. For OBJ a replace_kd / replace_ks image map becomes
+// map_Kd / map_Ks, named relative to the MTL file, with Kd / Ks = 255 / Normalizer (the
+// factor other tools multiply the texture by).
+aiMaterial* make_material(const rt::SceneDesc& s, const MaterialVariant& v, const std::string& name,
+                          const std::vector<std::string>& obj_images) {
+  const Material& mat = s.materials[v.material];
   aiMaterial* m = new aiMaterial;
-  aiString name(material_name(index));
-  m->AddProperty(&name, AI_MATKEY_NAME);
+  aiString ai_name(name);
+  m->AddProperty(&ai_name, AI_MATKEY_NAME);
   auto colour = [](float3 c) { return aiColor3D(c.x, c.y, c.z); };
   aiColor3D kd = colour(mat.diffuse), ks = colour(mat.specular), ka = colour(mat.ambient);
+  if (!obj_images.empty())
+    for (auto [decal, type] : {std::pair{RT_DECAL_REPLACE_KD, aiTextureType_DIFFUSE},
+                               std::pair{RT_DECAL_REPLACE_KS, aiTextureType_SPECULAR}}) {
+      int t = image_map(s, v.textures, decal);
+      if (t < 0) continue;
+      aiString file(obj_images[s.textures[t].image]);
+      m->AddProperty(&file, AI_MATKEY_TEXTURE(type, 0));
+      float k = 255.0f / s.textures[t].desc.normalizer;
+      (decal == RT_DECAL_REPLACE_KD ? kd : ks) = aiColor3D(k, k, k);
+    }
   m->AddProperty(&kd, 1, AI_MATKEY_COLOR_DIFFUSE);
   m->AddProperty(&ks, 1, AI_MATKEY_COLOR_SPECULAR);
   m->AddProperty(&ka, 1, AI_MATKEY_COLOR_AMBIENT);
@@ -114,35 +140,83 @@ aiMatrix4x4 to_ai(const rt::Mat4& t) {
   return a;
 }
 
+// The image files as the MTL file names them: relative to its folder where possible.
+std::vector<std::string> mtl_image_names(const std::vector<ImageFile>& images,
+                                         const std::string& path) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> out;
+  const fs::path dir = fs::absolute(fs::path(path)).parent_path();
+  for (const ImageFile& f : images) {
+    std::error_code ec;
+    fs::path rel = fs::relative(fs::absolute(f.path), dir, ec);
+    out.push_back(ec || rel.empty() ? fs::absolute(f.path).string() : rel.generic_string());
+  }
+  return out;
+}
+
 }  // namespace
 
+std::vector<MaterialVariant> material_variants(const rt::SceneDesc& s) {
+  std::vector<MaterialVariant> v;
+  for (size_t i = 0; i < s.materials.size(); ++i) v.push_back({static_cast<int>(i), {}});
+  for (const auto& o : s.objects)
+    if (!o.textures.empty() && variant_of(v, o) < 0) v.push_back({o.material, o.textures});
+  return v;
+}
+
+int variant_of(const std::vector<MaterialVariant>& variants, const rt::ObjectDesc& o) {
+  for (size_t i = 0; i < variants.size(); ++i)
+    if (variants[i].material == o.material && variants[i].textures == o.textures)
+      return static_cast<int>(i);
+  return -1;
+}
+
+std::string variant_name(const std::vector<MaterialVariant>& variants, size_t i) {
+  return variants[i].textures.empty()
+             ? material_name(variants[i].material)
+             : material_name(variants[i].material) + "_textured" + std::to_string(i);
+}
+
+int image_map(const rt::SceneDesc& s, const std::vector<int>& textures, int decal) {
+  for (int t : textures)
+    if (s.textures[t].desc.type == RT_TEXTURE_IMAGE && s.textures[t].desc.decal == decal) return t;
+  return -1;
+}
+
 void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const std::string& format,
-                        Report& report) {
+                        Report& report, const std::vector<ImageFile>& images) {
+  for (const auto& t : s.textures)
+    if (t.image >= static_cast<int>(images.size()))
+      throw ConvertError(path + ": " + t.element + ": its image file is not known");
   aiScene* scene = new aiScene;
   scene->mRootNode = new aiNode("root");
-  // The course's materials, then one emissive material per area light.
-  scene->mNumMaterials = static_cast<unsigned>(s.materials.size() + s.area_lights.size());
+  // The course's materials (with the textures of their objects), then one emissive
+  // material per area light. glTF's textures are added to its JSON afterwards.
+  const std::vector<MaterialVariant> variants = material_variants(s);
+  const std::vector<std::string> obj_images =
+      format == "obj" ? mtl_image_names(images, path) : std::vector<std::string>();
+  scene->mNumMaterials = static_cast<unsigned>(variants.size() + s.area_lights.size());
   scene->mMaterials = new aiMaterial*[scene->mNumMaterials];
-  for (size_t i = 0; i < s.materials.size(); ++i)
-    scene->mMaterials[i] = make_material(s.materials[i], i);
+  for (size_t i = 0; i < variants.size(); ++i)
+    scene->mMaterials[i] = make_material(s, variants[i], variant_name(variants, i), obj_images);
   for (size_t i = 0; i < s.area_lights.size(); ++i)
-    scene->mMaterials[s.materials.size() + i] = make_emitter(s.area_lights[i], i);
+    scene->mMaterials[variants.size() + i] = make_emitter(s.area_lights[i], i);
 
   const rt::MeshDesc sphere = unit_sphere();
-  std::map<std::pair<int, int>, unsigned> pair_mesh;  // (mesh or -1 for sphere, material)
+  std::map<std::pair<int, int>, unsigned> pair_mesh;  // (mesh or -1 for sphere, variant)
   std::vector<aiMesh*> meshes;
   std::vector<aiNode*> nodes;
   for (size_t i = 0; i < s.objects.size(); ++i) {
     const rt::ObjectDesc& o = s.objects[i];
     const int geometry = o.kind == rt::ObjectDesc::kSphere ? -1 : o.mesh;
-    auto [it, added] = pair_mesh.emplace(std::make_pair(geometry, o.material),
-                                         static_cast<unsigned>(meshes.size()));
+    const int variant = variant_of(variants, o);
+    auto [it, added] =
+        pair_mesh.emplace(std::make_pair(geometry, variant), static_cast<unsigned>(meshes.size()));
     if (added)
-      meshes.push_back(make_mesh(
-          geometry < 0 ? sphere : s.meshes[geometry], static_cast<unsigned>(o.material),
-          geometry < 0
-              ? "sphere_material" + std::to_string(o.material)
-              : "mesh" + std::to_string(geometry) + "_material" + std::to_string(o.material)));
+      meshes.push_back(
+          make_mesh(geometry < 0 ? sphere : s.meshes[geometry], static_cast<unsigned>(variant),
+                    (geometry < 0 ? std::string("sphere") : "mesh" + std::to_string(geometry)) +
+                        "_" + variant_name(variants, variant)));
     aiNode* n = new aiNode(object_name(i));
     n->mParent = scene->mRootNode;
     n->mTransformation = to_ai(o.transform);
@@ -158,7 +232,7 @@ void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const s
     n->mNumMeshes = 1;
     n->mMeshes = new unsigned[1]{static_cast<unsigned>(meshes.size())};
     meshes.push_back(make_mesh(light_quad(s.area_lights[i]),
-                               static_cast<unsigned>(s.materials.size() + i), area_light_name(i)));
+                               static_cast<unsigned>(variants.size() + i), area_light_name(i)));
     nodes.push_back(n);
   }
   scene->mNumMeshes = static_cast<unsigned>(meshes.size());
@@ -179,7 +253,7 @@ void export_with_assimp(const rt::SceneDesc& s, const std::string& path, const s
 
   if (format == "glb2") {
     try {
-      add_course_data_to_glb(s, path, report);
+      add_course_data_to_glb(s, path, images, report);
     } catch (...) {
       std::remove(path.c_str());  // Not a .glb without its cameras and lights.
       throw;

@@ -139,6 +139,20 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
   for (const PointLight& l : s.point_lights)
     o << "AttributeBegin\n  LightSource \"point\" \"point3 from\" [ " << v(l.position)
       << " ] \"rgb I\" [ " << v(l.intensity) << " ]\nAttributeEnd\n";
+  for (const Light& l : s.lights) {
+    const Vec3d d{l.normal.x, l.normal.y, l.normal.z}, p{l.position.x, l.position.y, l.position.z};
+    if (l.type == RT_LIGHT_DIRECTIONAL)
+      o << "AttributeBegin\n  LightSource \"distant\" \"point3 from\" [ 0 0 0 ] \"point3 to\" [ "
+        << v(d) << " ] \"rgb L\" [ " << v(l.emission) << " ]\nAttributeEnd\n";
+    if (l.type == RT_LIGHT_SPOT) {
+      const double cover = std::acos(l.param1) * 180 / M_PI,
+                   fall = std::acos(l.param0) * 180 / M_PI;
+      o << "AttributeBegin\n  LightSource \"spot\" \"point3 from\" [ " << v(p)
+        << " ] \"point3 to\" [ " << v(p + d) << " ] \"rgb I\" [ " << v(l.emission)
+        << " ] \"float coneangle\" " << cover << " \"float conedeltaangle\" " << cover - fall
+        << "\nAttributeEnd\n";
+    }
+  }
   for (const AreaLight& a : s.area_lights) {
     Vec3d c{a.corner.x, a.corner.y, a.corner.z}, e1{a.edge1.x, a.edge1.y, a.edge1.z},
         e2{a.edge2.x, a.edge2.y, a.edge2.z};
@@ -150,8 +164,9 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
   }
   // A mesh used by several objects becomes one pbrt object per material it wears.
   std::map<std::pair<int, int>, int> users;
+  // Object lights are written one by one: pbrt's object instances cannot emit.
   for (const auto& obj : s.objects)
-    if (obj.kind == rt::ObjectDesc::kMesh) ++users[{obj.mesh, obj.material}];
+    if (obj.kind == rt::ObjectDesc::kMesh && !obj.emits) ++users[{obj.mesh, obj.material}];
   for (const auto& [key, count] : users) {
     if (count < 2) continue;
     o << "\nObjectBegin \"mesh" << key.first << "_material" << key.second << "\"\n  "
@@ -162,10 +177,13 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
   for (const auto& obj : s.objects) {
     o << "\nAttributeBegin\n";
     place(o, obj);
+    // LightMesh and LightSphere: a diffuse area light on the shape, emitting from the front
+    // faces as the course's (pbrt's default is one-sided, on the side of the normal).
+    if (obj.emits) o << "  AreaLightSource \"diffuse\" \"rgb L\" [ " << v(obj.radiance) << " ]\n";
     if (obj.kind == rt::ObjectDesc::kSphere) {
       o << "  " << material(s.materials[obj.material])
         << "\n  Shape \"sphere\" \"float radius\" 1\n";
-    } else if (users[{obj.mesh, obj.material}] > 1) {
+    } else if (!obj.emits && users[{obj.mesh, obj.material}] > 1) {
       o << "  ObjectInstance \"mesh" << obj.mesh << "_material" << obj.material << "\"\n";
     } else {
       o << "  " << material(s.materials[obj.material]) << "\n";

@@ -3,6 +3,10 @@
 // volume), and under extras.ceng795 the course's exact values, which the importer prefers.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 
 #include "course_extras.h"
 #include "gltf_export.h"
@@ -78,13 +82,80 @@ void add_extension_used(json& g, const std::string& name) {
   if (std::find(used.begin(), used.end(), name) == used.end()) used.push_back(name);
 }
 
+// The image files, embedded in the .glb (a .glb is one self-contained file).
+std::vector<std::string> image_bytes(const std::vector<ImageFile>& images) {
+  std::vector<std::string> out;
+  for (const ImageFile& f : images) {
+    if (!f.bytes.empty()) {
+      out.push_back(f.bytes);
+      continue;
+    }
+    std::ifstream in(f.path, std::ios::binary);
+    if (!in) throw ConvertError(f.path + ": cannot read the texture image");
+    out.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  return out;
+}
+
+// glTF images (what viewers show) hold PNG and JPEG only; "" for the others (HDR maps).
+std::string mime_type(const std::string& bytes) {
+  if (bytes.size() > 4 && bytes.compare(1, 3, "PNG") == 0) return "image/png";
+  if (bytes.size() > 3 && static_cast<unsigned char>(bytes[0]) == 0xFF &&
+      static_cast<unsigned char>(bytes[1]) == 0xD8)
+    return "image/jpeg";
+  return "";
+}
+
+// Textured material variants: glTF's baseColorTexture shows a replace_kd map in viewers
+// (baseColorFactor 255 / Normalizer, as the course divides the image by it).
+void native_textures(json& g, const rt::SceneDesc& s, const std::map<int, int>& gltf_image) {
+  const std::vector<MaterialVariant> variants = material_variants(s);
+  std::map<int, int> texture_of_image;  // Course image -> glTF texture.
+  for (size_t i = s.materials.size(); i < variants.size(); ++i) {
+    int at = index_by_name(g["materials"], variant_name(variants, i));
+    int t = image_map(s, variants[i].textures, RT_DECAL_REPLACE_KD);
+    if (at < 0 || t < 0 || !gltf_image.count(s.textures[t].image)) continue;
+    const int image = s.textures[t].image;
+    if (!texture_of_image.count(image)) {
+      texture_of_image[image] = static_cast<int>(g["textures"].size());
+      g["textures"].push_back({{"source", gltf_image.at(image)}});
+    }
+    json& pbr = g["materials"][at]["pbrMetallicRoughness"];
+    double k = std::min(1.0, 255.0 / s.textures[t].desc.normalizer);
+    pbr["baseColorTexture"] = {{"index", texture_of_image[image]}};
+    pbr["baseColorFactor"] = {k, k, k, 1.0};
+  }
+}
+
 }  // namespace
 
-void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Report& report) {
+void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path,
+                            const std::vector<ImageFile>& images, Report& report) {
   json g = read_gltf_json(path);
   json& scene = g["scenes"][g.value("scene", 0)];
   scene["extras"][kExtrasKey] = settings_to_json(s);
   scene["extras"][kExtrasKey]["version"] = 1;
+  // Every image goes into the binary chunk as a bufferView (rewrite_glb_json appends
+  // them after Assimp's); PNG and JPEG ones are glTF images too.
+  const std::vector<std::string> blobs = image_bytes(images);
+  std::map<int, int> gltf_image;  // Course image -> glTF image.
+  for (size_t k = 0; k < blobs.size(); ++k) {
+    const size_t view = g["bufferViews"].size() + k;
+    const std::filesystem::path file(images[k].bytes.empty() ? images[k].path : images[k].name);
+    scene["extras"][kExtrasKey]["images"].push_back(
+        {{"bufferView", view}, {"name", file.filename().string()}, {"degamma", images[k].degamma}});
+    if (mime_type(blobs[k]).empty()) continue;
+    gltf_image[static_cast<int>(k)] = static_cast<int>(g["images"].size());
+    g["images"].push_back(
+        {{"bufferView", view}, {"mimeType", mime_type(blobs[k])}, {"name", file.stem().string()}});
+  }
+  for (const rt::TextureMapDesc& t : s.textures)
+    scene["extras"][kExtrasKey]["textures"].push_back(
+        texture_to_json(t, t.image >= 0 && images[t.image].degamma));
+  scene["extras"][kExtrasKey]["backgroundTexture"] = s.background_texture;
+  for (const Light& l : s.lights)
+    if (l.type == RT_LIGHT_DIRECTIONAL || l.type == RT_LIGHT_SPOT)
+      scene["extras"][kExtrasKey]["lights"].push_back(device_light_to_json(l));
   for (const AreaLight& a : s.area_lights)
     scene["extras"][kExtrasKey]["areaLights"].push_back(area_light_to_json(a));
   if (!s.area_lights.empty())
@@ -107,14 +178,16 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
     if (node >= 0) g["nodes"][node]["extras"][kExtrasKey] = {{"kind", "areaLight"}, {"light", i}};
   }
 
-  for (size_t i = 0; i < s.materials.size(); ++i) {
-    int at = index_by_name(g["materials"], material_name(i));
+  const std::vector<MaterialVariant> variants = material_variants(s);
+  for (size_t i = 0; i < variants.size(); ++i) {
+    int at = index_by_name(g["materials"], variant_name(variants, i));
     if (at < 0) continue;  // Assimp drops materials no mesh uses.
     json& m = g["materials"][at];
     m.erase("extensions");  // Assimp's guess (specular-glossiness) gives way to ours.
-    native_material(m, s.materials[i]);
-    m["extras"][kExtrasKey] = material_to_json(s.materials[i]);
+    native_material(m, s.materials[variants[i].material]);
+    m["extras"][kExtrasKey] = material_to_json(s.materials[variants[i].material]);
   }
+  native_textures(g, s, gltf_image);
   // Assimp lists extensions it did not use (volume, FB_ngon_encoding for our triangles);
   // the list is rebuilt from what the file holds.
   g.erase("extensionsUsed");
@@ -134,7 +207,10 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
         {"smooth", o.kind == rt::ObjectDesc::kMesh && s.meshes[o.mesh].smooth},
         {"material", o.material},
         {"matrix", to_json(o.transform)},
-        {"motionBlur", to_json(o.motion)}};
+        {"motionBlur", to_json(o.motion)},
+        {"textures", o.textures},
+        {"emits", o.emits},
+        {"radiance", to_json(o.radiance)}};
   }
   int moving = 0;
   for (const auto& o : s.objects) moving += o.motion.x != 0 || o.motion.y != 0 || o.motion.z != 0;
@@ -183,7 +259,7 @@ void add_course_data_to_glb(const rt::SceneDesc& s, const std::string& path, Rep
     g["extensions"]["KHR_lights_punctual"]["lights"] = lights;
     add_extension_used(g, "KHR_lights_punctual");
   }
-  rewrite_glb_json(path, g);
+  rewrite_glb_json(path, g, blobs);
 }
 
 }  // namespace rtconvert

@@ -7,14 +7,18 @@
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <map>
+#include <memory>
 
 #include "convert.h"
 #include "course_extras.h"
 #include "gltf_export.h"
 #include "import_lights.h"
 #include "material_map.h"
+#include "texture_import.h"
 
 namespace rtconvert {
 namespace {
@@ -47,21 +51,38 @@ bool has_smooth_normals(const aiMesh& m) {
   return false;
 }
 
-rt::MeshDesc mesh_of(const aiMesh& m) {
+// `uvs`: the mesh's first texture coordinates are kept, with v flipped (Assimp's origin is
+// the bottom left, the course's the top left). `weld`: vertices that differ only in the
+// attributes dropped here (texture seams of an untextured mesh) are merged again, so that
+// smooth shading does not split along them.
+rt::MeshDesc mesh_of(const aiMesh& m, bool uvs, bool weld) {
   rt::MeshDesc d;
   d.element = std::string("mesh '") + m.mName.C_Str() + "'";
-  for (unsigned i = 0; i < m.mNumVertices; ++i)
-    d.positions.push_back({m.mVertices[i].x, m.mVertices[i].y, m.mVertices[i].z});
+  std::vector<int> index(m.mNumVertices);
+  std::map<std::array<float, 6>, int> seen;
+  for (unsigned i = 0; i < m.mNumVertices; ++i) {
+    const aiVector3D p = m.mVertices[i], n = m.HasNormals() ? m.mNormals[i] : aiVector3D();
+    if (weld) {
+      auto [it, added] = seen.emplace(std::array<float, 6>{p.x, p.y, p.z, n.x, n.y, n.z},
+                                      static_cast<int>(d.positions.size()));
+      index[i] = it->second;
+      if (!added) continue;
+    } else {
+      index[i] = static_cast<int>(d.positions.size());
+    }
+    d.positions.push_back({p.x, p.y, p.z});
+    if (uvs) d.uvs.push_back({m.mTextureCoords[0][i].x, 1.0 - m.mTextureCoords[0][i].y});
+  }
   for (unsigned f = 0; f < m.mNumFaces; ++f)
     if (m.mFaces[f].mNumIndices == 3)
-      d.triangles.push_back({static_cast<int>(m.mFaces[f].mIndices[0]),
-                             static_cast<int>(m.mFaces[f].mIndices[1]),
-                             static_cast<int>(m.mFaces[f].mIndices[2])});
+      d.triangles.push_back({index[m.mFaces[f].mIndices[0]], index[m.mFaces[f].mIndices[1]],
+                             index[m.mFaces[f].mIndices[2]]});
   return d;
 }
 
 bool same_geometry(const rt::MeshDesc& a, const rt::MeshDesc& b) {
-  if (a.triangles != b.triangles || a.positions.size() != b.positions.size()) return false;
+  if (a.triangles != b.triangles || a.positions.size() != b.positions.size() || a.uvs != b.uvs)
+    return false;
   for (size_t i = 0; i < a.positions.size(); ++i)
     if (a.positions[i].x != b.positions[i].x || a.positions[i].y != b.positions[i].y ||
         a.positions[i].z != b.positions[i].z)
@@ -82,7 +103,8 @@ class Importer {
 
  private:
   void walk(const aiNode* node, const Mat4& parent);
-  int course_mesh(unsigned ai_index, bool smooth);
+  int course_mesh(unsigned ai_index, bool smooth, bool uvs);
+  void name_images();
   int course_material(unsigned ai_index);
   void add_object(const aiNode* node, unsigned ai_mesh, const Mat4& world);
 
@@ -97,6 +119,7 @@ class Importer {
   const MappedMaterial& mapped(unsigned ai_index);
   std::map<unsigned, MappedMaterial> mapped_;
   std::map<std::string, const json*> node_extras_;
+  std::unique_ptr<TextureImporter> textures_;
   int smooth_guessed_ = 0;
 };
 
@@ -128,10 +151,16 @@ int Importer::course_material(unsigned ai_index) {
   return material_of_ai_[ai_index] = static_cast<int>(out_.scene.materials.size()) - 1;
 }
 
-int Importer::course_mesh(unsigned ai_index, bool smooth) {
+int Importer::course_mesh(unsigned ai_index, bool smooth, bool uvs) {
   auto it = mesh_of_ai_.find(ai_index);
   if (it != mesh_of_ai_.end()) return it->second;
-  rt::MeshDesc d = mesh_of(*ai_->mMeshes[ai_index]);
+  const aiMesh& m = *ai_->mMeshes[ai_index];
+  rt::MeshDesc d = mesh_of(m, uvs && m.HasTextureCoords(0), !course_ && !uvs);
+  if (!course_ && !d.uvs.empty())
+    if (int n = wrap_texture_coordinates(d))
+      report_.warn(file_ + ": " + d.element + ": " + std::to_string(n) +
+                   " triangles span more than one repeat of their texture; the course "
+                   "clamps to the edge texels there");
   for (const Vec3d& p : d.positions)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw ConvertError(file_ + ": " + d.element + ": a vertex position is not finite");
@@ -164,10 +193,18 @@ void Importer::add_object(const aiNode* node, unsigned ai_mesh, const Mat4& worl
     if (o.material < 0 || o.material >= static_cast<int>(out_.scene.materials.size()))
       throw ConvertError(file_ + ": node '" + name + "': extras." + kExtrasKey + ".material " +
                          std::to_string(o.material) + " names no material");
+    // Texture maps and object lights: absent from files of rtconvert before they were kept.
+    o.textures = e.value("textures", std::vector<int>());
+    for (int t : o.textures)
+      if (t < 0 || t >= static_cast<int>(out_.scene.textures.size()))
+        throw ConvertError(file_ + ": node '" + name + "': extras." + kExtrasKey +
+                           ".textures names no texture " + std::to_string(t));
+    o.emits = e.value("emits", false);
+    if (o.emits) o.radiance = vec3d_from(e.at("radiance"));
     if (e.at("kind") == "sphere") {
       o.kind = rt::ObjectDesc::kSphere;
     } else {
-      o.mesh = course_mesh(ai_mesh, e.at("smooth").get<bool>());
+      o.mesh = course_mesh(ai_mesh, e.at("smooth").get<bool>(), true);
     }
     out_.scene.objects.push_back(o);
     return;
@@ -190,7 +227,13 @@ void Importer::add_object(const aiNode* node, unsigned ai_mesh, const Mat4& worl
   }
   bool smooth = has_smooth_normals(m);
   if (smooth && !mesh_of_ai_.count(ai_mesh)) ++smooth_guessed_;
-  o.mesh = course_mesh(ai_mesh, smooth);
+  o.textures = textures_->maps_of(m.mMaterialIndex, mat);
+  if (!o.textures.empty() && !m.HasTextureCoords(0)) {
+    report_.warn(file_ + ": mesh '" + m.mName.C_Str() +
+                 "': textured material but no texture coordinates: textures dropped");
+    o.textures.clear();
+  }
+  o.mesh = course_mesh(ai_mesh, smooth, !o.textures.empty());
   o.material = course_material(m.mMaterialIndex);
   o.transform = world;
   out_.scene.objects.push_back(o);
@@ -209,6 +252,23 @@ void Importer::walk(const aiNode* node, const Mat4& parent) {
   Mat4 world = parent * local;
   for (unsigned i = 0; i < node->mNumMeshes; ++i) add_object(node, node->mMeshes[i], world);
   for (unsigned i = 0; i < node->mNumChildren; ++i) walk(node->mChildren[i], world);
+}
+
+// Renders are named after the input (model.png; model_<camera>.png for several cameras),
+// so that two imported models rendered in one folder do not overwrite each other.
+void Importer::name_images() {
+  auto& cams = out_.scene.cameras;
+  const std::string stem = std::filesystem::path(file_).stem().string();
+  for (size_t i = 0; i < cams.size(); ++i) {
+    std::string camera = i < ai_->mNumCameras ? file_safe(ai_->mCameras[i]->mName.C_Str()) : "";
+    if (camera.empty()) camera = "camera" + std::to_string(i);
+    cams[i].image_name = cams.size() == 1 ? stem + ".png" : stem + "_" + camera + ".png";
+    for (size_t k = 0; k < i; ++k)
+      if (cams[k].image_name == cams[i].image_name) {
+        cams[i].image_name = stem + "_" + camera + "_" + std::to_string(i) + ".png";
+        break;
+      }
+  }
 }
 
 ImportedScene Importer::run(int default_width, bool use_extras) {
@@ -238,9 +298,10 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
   // welded where position and normal agree (texture seams do not split a smooth mesh).
   unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   if (!course_) {
+    // Texture coordinates stay for textured meshes; mesh_of welds the others again.
     flags |= aiProcess_JoinIdenticalVertices | aiProcess_RemoveComponent;
-    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_TEXCOORDS | aiComponent_COLORS |
-                                                            aiComponent_TANGENTS_AND_BITANGENTS);
+    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
+                                aiComponent_COLORS | aiComponent_TANGENTS_AND_BITANGENTS);
   }
   ai_ = importer.ReadFile(file_, flags);
   if (!ai_) throw ConvertError(file_ + ": " + importer.GetErrorString());
@@ -251,12 +312,21 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
     report_.warn(file_ + ": " + std::to_string(ai_->mNumAnimations) +
                  " animations ignored (the scene is taken at rest)");
 
+  if (std::filesystem::path(file_).extension() == ".obj" ||
+      std::filesystem::path(file_).extension() == ".OBJ")
+    warn_missing_material_libraries(file_, report_);
   rt::SceneDesc& s = out_.scene;
   s.file = file_;
+  // glTF's colour textures are sRGB by its specification; OBJ and FBX say nothing, and
+  // their maps are used as stored, as the course's are.
+  textures_ = std::make_unique<TextureImporter>(*ai_, file_, gltf_.is_object(), out_, report_);
   if (course_) {
     settings_from_json(*scene_extras, s);
+    textures_from_json(*scene_extras, gltf_, file_, out_);
     for (const json& a : scene_extras->value("areaLights", json::array()))
       s.area_lights.push_back(area_light_from_json(a));
+    for (const json& l : scene_extras->value("lights", json::array()))
+      s.lights.push_back(device_light_from_json(l));
     // Materials in the exporter's order (material0, material1, ...), by name.
     std::map<int, Material> by_index;
     for (const json& m : gltf_.value("materials", json::array()))
@@ -302,6 +372,7 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
     import_lights(*ai_, file_, gltf_.is_object(), s, report_);
   }
   add_defaults(file_, default_width, s, report_);
+  if (!course_) name_images();
   return std::move(out_);
 }
 
@@ -313,6 +384,10 @@ ImportedScene import_with_assimp(const std::string& path, int default_width, boo
     return Importer(path, report).run(default_width, use_extras);
   } catch (const json::exception& e) {
     throw ConvertError(path + ": glTF extras." + kExtrasKey + " malformed: " + e.what());
+  } catch (const ConvertError& e) {
+    // The extras' readers do not know the file: their messages start with "extras".
+    if (std::string(e.what()).rfind("extras", 0) != 0) throw;
+    throw ConvertError(path + ": glTF " + e.what());
   }
 }
 

@@ -97,7 +97,9 @@ void import_cameras(const aiScene& ai, const std::string& file, bool gltf, int w
       throw ConvertError(where + "orthographic projection (the course's cameras are perspective)");
     Mat4 t = global_transform(ai, c.mName);
     rt::CameraDesc d;
-    d.position = t.point(v3(c.mPosition));
+    // A glTF camera sits at its node's origin; Assimp 5.2 also copies the node's
+    // translation into mPosition, which the node's transform would then apply twice.
+    d.position = t.point(gltf ? Vec3d{0, 0, 0} : v3(c.mPosition));
     d.gaze = t.vector(v3(c.mLookAt));
     d.up = t.vector(v3(c.mUp));
     if (length(cross(d.gaze, d.up)) == 0)
@@ -201,7 +203,9 @@ void add_defaults(const std::string& file, int width, rt::SceneDesc& s, Report& 
     s.cameras.push_back(c);
     report.warn(file + ": no camera: a default one frames the scene (40 degrees vertical)");
   }
-  if (s.point_lights.empty() && s.area_lights.empty()) {
+  bool object_lights = false;
+  for (const auto& o : s.objects) object_lights = object_lights || o.emits;
+  if (s.point_lights.empty() && s.area_lights.empty() && s.lights.empty() && !object_lights) {
     const rt::CameraDesc& c = s.cameras[0];
     Vec3d p = c.position + Vec3d{0, 0.5 * b.diagonal(), 0};
     double d2 = dot(p - b.centre(), p - b.centre());

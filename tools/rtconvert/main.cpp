@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "convert.h"
-#include "util/errors.h"
 #include "util/args.h"
+#include "util/errors.h"
 
 namespace {
 
@@ -57,32 +57,27 @@ int main(int argc, char** argv) {
   rtconvert::Report report;
   const std::string in = extension(o.input), out = extension(o.output);
   try {
+    // Before anything is read or written: an output that is the input would replace the
+    // scene by a lossy rewrite of itself. An OBJ export writes its MTL file too.
+    rtconvert::check_not_input(o.input, o.output);
+    if (out == "obj")  // Assimp names it after the OBJ, with ".mtl" in lower case.
+      rtconvert::check_not_input(o.input, o.output.substr(0, o.output.size() - 3) + "mtl");
     if (in == "xml") {
-      rt::SceneDesc scene = rt::load_scene(o.input);
-      for (const auto& w : scene.warnings) report.warn(w);
-      // Light types beyond the course's point and area lights have no mapping yet.
-      if (!scene.lights.empty())
-        report.warn(o.input + ": " + std::to_string(scene.lights.size()) +
-                    " lights of types other than point and area are not converted");
-      int models = 0;
-      for (const Material& m : scene.materials) models += m.brdf != 0 || m.unlit != 0;
-      if (models)
-        report.warn(o.input + ": " + std::to_string(models) +
-                    " materials with a BRDF model or unlit: converted as Blinn-Phong");
-      if (!scene.textures.empty())
-        report.warn(o.input + ": " + std::to_string(scene.textures.size()) +
-                    " texture maps and the texture coordinates are not converted");
-      if (out == "glb") {
-        rtconvert::export_with_assimp(scene, o.output, "glb2", report);
-      } else if (out == "obj") {
-        rtconvert::export_with_assimp(scene, o.output, "obj", report);
-      } else if (out == "pbrt") {
-        rtconvert::export_pbrt(scene, o.output, report);
-      } else if (out == "xml") {
-        rtconvert::write_course_xml({scene, {}}, o.output, report);
-      } else {
+      if (out != "glb" && out != "obj" && out != "pbrt" && out != "xml")
         throw rtconvert::ConvertError(o.output + ": cannot export to '." + out +
                                       "' (use .glb, .obj, .pbrt or .xml)");
+      rtconvert::ImportedScene scene{rt::load_scene(o.input), {}, {}};
+      for (const auto& w : scene.scene.warnings) report.warn(w);
+      scene.images = rtconvert::course_image_files(o.input, scene.scene);
+      rtconvert::warn_dropped(scene.scene, o.output, out, report);
+      if (out == "glb") {
+        rtconvert::export_with_assimp(scene.scene, o.output, "glb2", report, scene.images);
+      } else if (out == "obj") {
+        rtconvert::export_with_assimp(scene.scene, o.output, "obj", report, scene.images);
+      } else if (out == "pbrt") {
+        rtconvert::export_pbrt(scene.scene, o.output, report);
+      } else {
+        rtconvert::write_course_xml(scene, o.output, report);
       }
     } else {
       if (out != "xml")

@@ -62,12 +62,7 @@ MappedMaterial map_material(const aiMaterial& m, const std::string& file, Report
   if (has_base && !has_diffuse) diffuse = base;
   if (has_base && has_metallic) diffuse = base;  // glTF: the base colour is the truth.
 
-  for (aiTextureType t : {aiTextureType_DIFFUSE, aiTextureType_BASE_COLOR, aiTextureType_SPECULAR,
-                          aiTextureType_NORMALS, aiTextureType_METALNESS})
-    if (m.GetTextureCount(t) > 0) {
-      report.warn(where + "textures are not supported: the constant colours are used");
-      break;
-    }
+  // Textures: texture_import.cpp, once the material's type is known.
   if (p.colour(AI_MATKEY_COLOR_EMISSIVE, emissive) && peak(emissive) > 0)
     out.emission = scale(emissive, emissive_strength * kRadianceScale);
 

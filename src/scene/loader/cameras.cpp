@@ -13,15 +13,27 @@
 #include <sstream>
 
 #include "cl/material/brdf.h"
-#include "util/errors.h"
 #include "image/read_ldr.h"
+#include "io/image_output.h"
 #include "scene/loader/loader.h"
 #include "scene/ply.h"
 #include "scene/scene.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
+
+Vec3d Loader::camera_direction(const XMLElement* e, Vec3d v, const char* what) const {
+  nonzero(e, v, what);
+  const float x = static_cast<float>(v.x), y = static_cast<float>(v.y), z = static_cast<float>(v.z);
+  const float squared = x * x + y * y + z * z;
+  if (!(squared >= FLT_MIN))
+    fail_value(e, "is too short for float: its squared length underflows (scale it up)");
+  if (!(squared <= FLT_MAX))
+    fail_value(e, "is too long for float: its squared length overflows (scale it down)");
+  return v;
+}
 
 void Loader::read_cameras(const XMLElement* scene) {
   // Files of 2017 put <Camera> directly under <Scene>, without <Cameras>.
@@ -41,18 +53,19 @@ void Loader::read_cameras(const XMLElement* scene) {
     }
     cam.position = vec3(child(c, "Position", true));
     const XMLElement* up = child(c, "Up", true);
-    cam.up = nonzero(up, vec3(up));
+    cam.up = camera_direction(up, vec3(up), "is a zero-length vector");
     cam.near_distance = number(child(c, "NearDistance", true));
     if (!(cam.near_distance > 0)) fail_value(child(c, "NearDistance", true), "must be positive");
     const char* type = c->Attribute("type");
     if (type && std::string(type) == "lookAt") {
       // hw6's lookAt cameras may give a <Gaze> direction instead of a <GazePoint>.
       if (!child(c, "GazePoint", false) && child(c, "Gaze", false)) {
-        cam.gaze = nonzero(child(c, "Gaze", true), vec3(child(c, "Gaze", true)));
+        cam.gaze = camera_direction(child(c, "Gaze", true), vec3(child(c, "Gaze", true)),
+                                    "is a zero-length vector");
       } else {
         Vec3d target = vec3(child(c, "GazePoint", true));
-        cam.gaze = nonzero(child(c, "GazePoint", true), target - cam.position,
-                           "equals the camera Position: no gaze direction");
+        cam.gaze = camera_direction(child(c, "GazePoint", true), target - cam.position,
+                                    "equals the camera Position: no gaze direction");
       }
       const XMLElement* fov = child(c, "FovY", true);
       double fovy = number(fov);
@@ -62,7 +75,8 @@ void Loader::read_cameras(const XMLElement* scene) {
     } else {
       if (!child(c, "Gaze", false) && child(c, "GazePoint", false))
         fail(c, "missing <Gaze> (a camera with <GazePoint> needs type=\"lookAt\")");
-      cam.gaze = nonzero(child(c, "Gaze", true), vec3(child(c, "Gaze", true)));
+      cam.gaze = camera_direction(child(c, "Gaze", true), vec3(child(c, "Gaze", true)),
+                                  "is a zero-length vector");
       // Some course files carry a fifth number (the near distance again); it is ignored.
       auto np = numbers(child(c, "NearPlane", true), 4, 5);
       cam.left = np[0];
@@ -92,10 +106,23 @@ void Loader::read_cameras(const XMLElement* scene) {
     image.erase(0, image.find_first_not_of(" \t\r\n"));
     image.erase(image.find_last_not_of(" \t\r\n") + 1);
     if (image.empty()) fail(name, "empty image name");
-    // Output stays inside --output-dir: no directories, no way out of it.
-    if (image.find('/') != std::string::npos || image.find('\\') != std::string::npos ||
-        image == "." || image == "..")
-      fail_value(name, "must be a plain file name");
+    // Output stays inside --output-dir: a file name or a relative path below it, never
+    // out of it. Its folders must exist there (checked with the output folder, before any
+    // render: src/app/output_check.cpp).
+    const std::filesystem::path image_path(image);
+    bool escapes = image_path.is_absolute() || image.find('\\') != std::string::npos;
+    for (const auto& part : image_path) escapes = escapes || part == "..";
+    if (escapes)
+      fail_value(name,
+                 "must be a file name or a relative path below the output folder (no '..', "
+                 "not absolute); choose the folder with --output-dir");
+    const std::string file_name = image_path.filename().string();
+    if (file_name.empty() || file_name == ".")
+      fail_value(name, "names a folder, not an image file");
+    if (image_format_of(image) == ImageFormat::kUnknown)
+      fail_value(name,
+                 "has an extension the renderer cannot write (.png, .jpg or .jpeg, written as "
+                 "JPEG of quality 95, and .exr)");
     cam.image_name = image;
     cam.element = path_of(name);
     if (const XMLElement* ns = child(c, "NumSamples", false)) {

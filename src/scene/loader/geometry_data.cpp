@@ -6,10 +6,10 @@
 #include <cstring>
 #include <filesystem>
 
-#include "util/errors.h"
 #include "scene/loader/binary_data.h"
 #include "scene/loader/loader.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
@@ -40,8 +40,7 @@ std::vector<double> Loader::binary_numbers(const XMLElement* e, int per_record, 
   try {
     words = read_binary_records(p.string(), per_record);
   } catch (const InputError& err) {
-    // The reader names the binary file; add the scene file and the element.
-    fail(e, "binaryFile '" + shorten(name) + "': " + err.what());
+    fail_file(e, "binaryFile", p.string(), err);
   }
   std::vector<double> out;
   out.reserve(words.size());

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "util/errors.h"
 #include "scene/scene.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
@@ -40,6 +40,17 @@ class Loader {
     fail(e, "'" + shorten(text_of(e)) + "' " + what);
   }
 
+  // A file the scene names (plyFile="m.ply") failed to read: the attribute with the path it
+  // resolved to (where the file was looked for), then the reader's message without the
+  // path it starts with, so that the file is named once.
+  [[noreturn]] void fail_file(const XMLElement* e, const char* attribute, const std::string& path,
+                              const InputError& err) const {
+    std::string why = err.what();
+    if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
+    if (why.rfind("file: ", 0) == 0) why.erase(0, 6);
+    fail(e, std::string(attribute) + " '" + shorten(path, 200) + "': " + why);
+  }
+
   std::vector<double> numbers(const XMLElement* e, size_t min_count, size_t max_count) const;
   double number(const XMLElement* e) const { return numbers(e, 1, 1)[0]; }
   Vec3d vec3(const XMLElement* e) const {
@@ -53,6 +64,11 @@ class Loader {
     if (length(v) == 0) fail_value(e, what);
     return v;
   }
+
+  // A camera's Gaze or Up: non-zero, and with a squared length inside float's normal range,
+  // because the camera is normalized in float as the course's renderer does
+  // (src/prepare/course_camera.cpp); outside it the basis is 0 or Inf and the image blank.
+  Vec3d camera_direction(const XMLElement* e, Vec3d v, const char* what) const;
 
   void read_cameras(const XMLElement* scene);
   void read_tonemap(const XMLElement* tm, CameraDesc* cam) const;
@@ -94,7 +110,7 @@ class Loader {
     if (options_.strict) throw InputError(line + " [--strict: warnings are errors]");
     scene_.warnings.push_back(line);
   }
-  SceneDesc read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError err);
+  SceneDesc read_document(const tinyxml2::XMLDocument& doc);
 
   std::string file_;
   LoadOptions options_;

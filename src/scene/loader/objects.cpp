@@ -13,12 +13,13 @@
 #include <sstream>
 
 #include "cl/material/brdf.h"
-#include "util/errors.h"
 #include "image/read_ldr.h"
 #include "scene/loader/loader.h"
+#include "scene/loader/shared_ids.h"
 #include "scene/ply.h"
 #include "scene/scene.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
@@ -125,8 +126,7 @@ int Loader::add_mesh_from_faces(const XMLElement* obj, const XMLElement* faces, 
       scene_.inputs.push_back(p.string());
       pm = read_ply(p.string());
     } catch (const InputError& err) {
-      // The PLY reader names the PLY file; add the scene file and the element.
-      fail(faces, "plyFile '" + shorten(ply) + "': " + err.what());
+      fail_file(faces, "plyFile", p.string(), err);
     }
     for (auto& v : pm.positions) mesh.positions.push_back({v[0], v[1], v[2]});
     mesh.triangles = pm.triangles;
@@ -224,10 +224,16 @@ void Loader::read_objects(const XMLElement* scene) {
     } else if (name == "MeshInstance") {
       const char* base_id = e->Attribute("baseMeshId");
       if (!base_id) fail(e, "missing baseMeshId");
-      // Older files reuse mesh ids for instances; a Mesh with the id wins.
-      // Then a LightMesh: its instances are lights too, each with its own transform.
+      // Older files reuse mesh ids for instances: the kinds are looked up in the order of
+      // the shared-id table (a Mesh with the id wins). A LightMesh's instances are lights
+      // too, each with its own transform.
+      const std::map<std::string, const std::map<std::string, int>*> by_kind = {
+          {"Mesh", &mesh_objects_},
+          {"MeshInstance", &instance_objects_},
+          {"LightMesh", &light_mesh_objects_}};
       int base_index = -1;
-      for (auto* ids : {&mesh_objects_, &instance_objects_, &light_mesh_objects_}) {
+      for (const std::string& kind : shared_ids_of("Objects", "MeshInstance")->kinds) {
+        const std::map<std::string, int>* ids = by_kind.at(kind);
         auto it = ids->find(base_id);
         if (it != ids->end()) {
           base_index = it->second;

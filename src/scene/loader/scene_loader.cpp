@@ -12,16 +12,18 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include "cl/material/brdf.h"
-#include "util/errors.h"
 #include "image/read_ldr.h"
 #include "scene/loader/loader.h"
 #include "scene/ply.h"
 #include "scene/scene.h"
 #include "scene/scene_schema.h"
+#include "scene/xml_diagnosis.h"
 #include "scene/xml_text.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace loader {
@@ -73,7 +75,7 @@ std::vector<double> Loader::numbers(const XMLElement* e, size_t min_count, size_
 
 const XMLElement* Loader::child(const XMLElement* e, const char* name, bool required) const {
   const XMLElement* c = e->FirstChildElement(name);
-  if (!c && required) fail(e, std::string("missing <") + name + ">");
+  if (!c && required) fail(e, std::string("missing <") + name + ">" + misspelling_hint(e, name));
   return c;
 }
 
@@ -88,42 +90,51 @@ Vec3d Loader::child_vec3(const XMLElement* e, const char* name, Vec3d fallback) 
 }
 
 SceneDesc Loader::load() {
-  tinyxml2::XMLDocument doc;
-  errno = 0;
-  tinyxml2::XMLError err = doc.LoadFile(file_.c_str());
-  const int open_errno = errno;
-  if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND ||
-      err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
-    throw input_error(file_, "file",
-                      std::string("cannot open") +
-                          (open_errno ? std::string(": ") + std::strerror(open_errno) : ""));
+  if (file_.empty())
+    throw InputError("scene file '': the name is empty (give the path of an XML scene file)");
   // A directory opens but cannot be read; tinyxml2 would call either "malformed at line 0".
   std::error_code ec;
-  if (err == tinyxml2::XML_ERROR_FILE_READ_ERROR || std::filesystem::is_directory(file_, ec))
-    throw input_error(file_, "file",
-                      std::filesystem::is_directory(file_, ec) ? "is a directory, not a scene file"
-                                                               : "cannot read");
+  if (std::filesystem::is_directory(file_, ec))
+    throw input_error(file_, "file", "is a directory, not a scene file");
+  errno = 0;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file_.c_str(), "rb"), &std::fclose);
+  if (!f)
+    throw input_error(
+        file_, "file",
+        std::string("cannot open") + (errno ? std::string(": ") + std::strerror(errno) : ""));
+  std::string text;
+  char buf[1 << 16];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f.get())) > 0;) text.append(buf, n);
+  if (std::ferror(f.get())) throw input_error(file_, "file", "cannot read");
   scene_.inputs.push_back(file_);
-  return read_document(doc, err);
+  return load_text(text);
 }
 
 SceneDesc Loader::load_text(const std::string& xml) {
+  // A mesh or an image given as the scene: say so rather than what the XML parser makes of it.
+  const std::string kind = non_xml_kind(xml);
+  if (!kind.empty())
+    throw InputError(file_ + ": not an XML scene file (it starts like a " + kind + " file)");
   tinyxml2::XMLDocument doc;
-  return read_document(doc, doc.Parse(xml.data(), xml.size()));
-}
-
-SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError err) {
+  const tinyxml2::XMLError err = doc.Parse(xml.data(), xml.size());
   if (err == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)
     throw input_error(file_, "XML", "empty document: no <Scene> element");
   if (err != tinyxml2::XML_SUCCESS) {
-    // ErrorStr() ends in ": XMLElement name=ImageName" when it knows the element.
-    std::string detail = doc.ErrorStr() ? doc.ErrorStr() : "", where;
-    size_t at = detail.find("XMLElement name=");
-    if (at != std::string::npos) where = " in <" + shorten(detail.substr(at + 16)) + ">";
-    throw input_error(file_, "XML",
-                      std::string("malformed at line ") + std::to_string(doc.ErrorLineNum()) +
-                          where + ": " + doc.ErrorName());
+    XmlProblem p = find_xml_problem(xml);
+    if (p.what.empty()) {
+      // Something the scan does not know; the parser's line and element, in words.
+      std::string detail = doc.ErrorStr() ? doc.ErrorStr() : "";
+      size_t at = detail.find("XMLElement name=");
+      p = {doc.ErrorLineNum(), at == std::string::npos ? std::string("the XML parser stops here")
+                                                       : "the XML parser stops in <" +
+                                                             shorten(detail.substr(at + 16)) + ">"};
+    }
+    throw InputError(file_ + ":" + std::to_string(p.line) + ": malformed XML: " + p.what);
   }
+  return read_document(doc);
+}
+
+SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc) {
   const XMLElement* scene = doc.FirstChildElement("Scene");
   if (!scene) throw input_error(file_, "XML", "no <Scene> root element");
   scene_.file = file_;
