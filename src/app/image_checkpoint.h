@@ -24,8 +24,13 @@ class ImageCheckpoint {
   // The hooks of render_camera: the saved film to start from, and with --checkpoint the
   // saves between passes.
   const PassHooks* hooks(RenderDevice& device);
-  // The samples the saved film holds (0 without one).
-  int start_sample() const { return hooks_.start_sample; }
+  // The saved film alone, without the saves between passes: a distributed rank renders
+  // only a band of the image, which rank 0 writes (distributed/tile_worker.cpp).
+  PassHooks resume_only() const {
+    PassHooks h = hooks_;
+    h.after_pass = nullptr;
+    return h;
+  }
 
   // Writes the render's outputs: an interrupted one's (fewer samples than asked) marked
   // partial with its checkpoint beside them, a finished one's without a mark, its
