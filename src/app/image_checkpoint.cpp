@@ -90,10 +90,11 @@ void ImageCheckpoint::save(RenderDevice& device, int spp) {
                  spp, asked_);
 }
 
-// The checkpoint first: an image marked partial always has the film that continues it.
+// The checkpoint first: an image marked partial has the film that continues it whenever
+// checkpoints are asked for (--checkpoint, --resume, or a render continued from one).
 void ImageCheckpoint::write(const RenderResult& r, bool partial) {
   const CameraDesc& cam = scene_.desc.cameras[camera_];
-  if (partial) {
+  if (partial && keeps_checkpoints()) {
     Checkpoint c;
     c.key = key();
     c.spp = r.spp;
@@ -108,9 +109,9 @@ void ImageCheckpoint::write(const RenderResult& r, bool partial) {
 std::string ImageCheckpoint::finish(const RenderResult& r, bool interrupted) {
   const bool partial = interrupted && r.spp < asked_;
   write(r, partial);
-  if (partial) return path_;
+  if (partial && keeps_checkpoints()) return path_;
   std::error_code ec;
-  std::filesystem::remove(path_, ec);
+  std::filesystem::remove(path_, ec);  // Done with, or stale (not this image's film).
   return "";
 }
 

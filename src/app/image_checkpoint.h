@@ -33,12 +33,15 @@ class ImageCheckpoint {
   }
 
   // Writes the render's outputs: an interrupted one's (fewer samples than asked) marked
-  // partial with its checkpoint beside them, a finished one's without a mark, its
-  // checkpoint removed. Returns the checkpoint's path when one was written, else "".
+  // partial, with its checkpoint beside them when checkpoints are asked for (--checkpoint,
+  // --resume, a render continued from one; a plain interrupt leaves no other file); a
+  // finished one's without a mark, its checkpoint removed. Returns the checkpoint's path
+  // when one was written, else "".
   std::string finish(const RenderResult& r, bool interrupted);
 
  private:
   void save(RenderDevice& device, int spp);
+  bool keeps_checkpoints() const { return opt_.checkpoint_s > 0 || opt_.resume || saved_.spp > 0; }
   const CheckpointKey& key();
   void write(const RenderResult& r, bool partial);
 

@@ -149,6 +149,19 @@ TEST_P(Resume, CheckpointWritesAtTheIntervalAsked) {
   EXPECT_EQ(count(none.err, "stats: checkpoint: "), 0) << none.err;
 }
 
+// Without --checkpoint or --resume an interrupt leaves the image, marked partial, and no
+// other file (--skip-existing then renders it again, tested above).
+TEST_P(Resume, PlainInterruptLeavesNoCheckpoint) {
+  const pid_t pid = start(args(out_, ""));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // Seconds of passes ahead.
+  kill(pid, SIGINT);
+  const Outcome r = finish(pid);
+  ASSERT_EQ(r.code, 130) << r.err;
+  EXPECT_EQ(r.err.find("checkpoint"), std::string::npos) << r.err;
+  EXPECT_EQ(rt::output_status(out_ + "/simple.png").state, rt::OutputState::kPartial);
+  EXPECT_FALSE(fs::exists(out_ + "/simple.png.rtcheckpoint"));
+}
+
 INSTANTIATE_TEST_SUITE_P(Devices, Resume, ::testing::Values(rt::Device::kCpu, rt::Device::kOpenCl),
                          [](const auto& info) { return std::string(device_label(info.param)); });
 
