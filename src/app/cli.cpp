@@ -170,8 +170,9 @@ OptionTable<CliOptions> make_raytracer_table() {
       .default_is("only on an interrupt")
       .flag("--resume", RT_FIELD(resume),
             "continue every camera that has an <image>.rtcheckpoint to its full sample count, "
-            "with the bytes of an uninterrupted render; a checkpoint made with other "
-            "settings is refused; it is removed once the image is complete")
+            "with the bytes of an uninterrupted render (a checkpoint made with other settings "
+            "is refused; it is removed once the image is complete), skip those whose outputs "
+            "are complete (as --skip-existing), and keep checkpoints on an interrupt")
       .integer("--tile-rows", "N", Range::closed(1, 1 << 20), RT_FIELD(tile_rows),
                "under mpirun: rows of a tile when images are cut among the ranks (rounded up "
                "to a multiple of 32); the images do not depend on it")

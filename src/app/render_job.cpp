@@ -69,7 +69,7 @@ std::vector<int> job_cameras(const CliOptions& opt, const JobScene& scene) {
   std::vector<int> cameras;
   for (int c = 0; c < static_cast<int>(scene.desc.cameras.size()); ++c) {
     if (opt.camera >= 0 && c != opt.camera) continue;
-    if (opt.skip_existing) {
+    if (opt.skip_existing || opt.resume) {
       const std::string image = image_path(opt, scene, c);
       std::string why;  // The first partial output; empty when one is missing.
       bool complete = true;

@@ -34,9 +34,9 @@ std::string image_path(const CliOptions& opt, const JobScene& scene, int camera)
 std::vector<std::string> camera_outputs(const CliOptions& opt, const CameraDesc& cam,
                                         const std::string& image);
 
-// The cameras of `scene` to render: --camera's or all; with --skip-existing without those
-// whose outputs all exist and are complete (io/partial_mark.h); a partial one is named
-// (unless --quiet) with whether its checkpoint continues it.
+// The cameras of `scene` to render: --camera's or all; with --skip-existing or --resume
+// without those whose outputs all exist and are complete (io/partial_mark.h); a partial
+// one is named (unless --quiet) with whether its checkpoint continues it.
 std::vector<int> job_cameras(const CliOptions& opt, const JobScene& scene);
 
 // The device the options ask for; `gpu_rank` and `threads` as DeviceOptions has them.

@@ -85,6 +85,10 @@ TEST_P(Resume, InterruptedThenResumedIsByteIdentical) {
   const Outcome r = run(args(out_, " --resume"));
   ASSERT_EQ(r.code, 0) << r.err;
   expect_same_as(ref);
+  // Complete now: --resume leaves it as it is.
+  const auto before = fs::last_write_time(out_ + "/simple.png");
+  ASSERT_EQ(run(args(out_, " --resume")).code, 0);
+  EXPECT_EQ(fs::last_write_time(out_ + "/simple.png"), before);
 }
 
 TEST_P(Resume, SkipExistingContinuesAPartialImage) {
