@@ -63,6 +63,18 @@ class Resume : public CliFixture, public ::testing::WithParamInterface<rt::Devic
     kill(pid, SIGINT);
     return finish(pid);
   }
+  // --skip-existing without --quiet, so its notice about a partial image is shown.
+  Outcome skip_existing() {
+    std::string a = args(out_, " --skip-existing");
+    a.replace(a.find(" --quiet"), 8, "");
+    return run(a);
+  }
+  // A run with `flag` leaves the complete image as it is.
+  void expect_kept_by(const std::string& flag) {
+    const auto before = fs::last_write_time(out_ + "/simple.png");
+    ASSERT_EQ(run(args(out_, flag)).code, 0);
+    EXPECT_EQ(fs::last_write_time(out_ + "/simple.png"), before) << flag;
+  }
   void expect_same_as(const fs::path& ref) {
     for (const char* name : {"simple.png", "simple.moments.exr"})
       EXPECT_EQ(slurp(fs::path(out_) / name), slurp(ref / name)) << name << " differs";
@@ -85,35 +97,25 @@ TEST_P(Resume, InterruptedThenResumedIsByteIdentical) {
   const Outcome r = run(args(out_, " --resume"));
   ASSERT_EQ(r.code, 0) << r.err;
   expect_same_as(ref);
-  // Complete now: --resume leaves it as it is.
-  const auto before = fs::last_write_time(out_ + "/simple.png");
-  ASSERT_EQ(run(args(out_, " --resume")).code, 0);
-  EXPECT_EQ(fs::last_write_time(out_ + "/simple.png"), before);
+  expect_kept_by(" --resume");  // Complete now.
 }
 
 TEST_P(Resume, SkipExistingContinuesAPartialImage) {
   const fs::path ref = reference();
   ASSERT_EQ(interrupted().code, 130);
-  std::string a = args(out_, " --skip-existing");
-  a.replace(a.find(" --quiet"), 8, "");  // Without --quiet: the notice is shown.
-  const Outcome r = run(a);
+  const Outcome r = skip_existing();
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("simple.png is partial ("), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("continuing it from its checkpoint"), std::string::npos) << r.err;
   expect_same_as(ref);
-  // Now complete: skipped, nothing rewritten.
-  const auto before = fs::last_write_time(out_ + "/simple.png");
-  ASSERT_EQ(run(args(out_, " --skip-existing")).code, 0);
-  EXPECT_EQ(fs::last_write_time(out_ + "/simple.png"), before);
+  expect_kept_by(" --skip-existing");  // Complete now.
 }
 
 TEST_P(Resume, SkipExistingRendersAPartialImageWithoutCheckpointAgain) {
   const fs::path ref = reference();
   ASSERT_EQ(interrupted().code, 130);
   fs::remove(out_ + "/simple.png.rtcheckpoint");
-  std::string a = args(out_, " --skip-existing");
-  a.replace(a.find(" --quiet"), 8, "");
-  const Outcome r = run(a);
+  const Outcome r = skip_existing();
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("no checkpoint, rendering it again"), std::string::npos) << r.err;
   expect_same_as(ref);
