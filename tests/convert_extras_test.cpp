@@ -51,8 +51,8 @@ TEST(ConvertLights, DirectionalAndSpotLightsComeBackBitForBit) {
       EXPECT_EQ(std::memcmp(&la.position, &lb.position, sizeof la.position), 0) << back << i;
       EXPECT_EQ(std::memcmp(&la.normal, &lb.normal, sizeof la.normal), 0) << back << i;
       EXPECT_EQ(std::memcmp(&la.emission, &lb.emission, sizeof la.emission), 0) << back << i;
-      EXPECT_EQ(la.param0, lb.param0) << back << " light " << i;
-      EXPECT_EQ(la.param1, lb.param1) << back << " light " << i;
+      EXPECT_EQ(RT_SPOT_COS_FALLOFF(&la), RT_SPOT_COS_FALLOFF(&lb)) << back << " light " << i;
+      EXPECT_EQ(RT_SPOT_COS_COVERAGE(&la), RT_SPOT_COS_COVERAGE(&lb)) << back << " light " << i;
     }
   }
   fs::remove_all(dir);

@@ -125,7 +125,7 @@ TEST(ObjectLightLoader, MeshAndSphereAreGeometryAndLights) {
   const Light& mesh = FirstObjectLight(f);
   EXPECT_EQ(mesh.type, RT_LIGHT_MESH);
   EXPECT_FLOAT_EQ(RT_LIGHT_SURFACE_AREA(&mesh), 4.0f);
-  EXPECT_EQ(mesh.count, 2);
+  EXPECT_EQ(RT_MESH_COUNT(&mesh), 2);
   EXPECT_EQ(f.flat.light_cdf[RT_MESH_CDF(&mesh) + 1], 1.0f);
   EXPECT_FLOAT_EQ(f.flat.light_cdf[RT_MESH_CDF(&mesh)], 0.5f);
   // Each instance names its light back.

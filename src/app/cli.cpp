@@ -159,8 +159,20 @@ OptionTable<CliOptions> make_raytracer_table() {
       .real("--resolution-scale", "F", Range::left_open(0, 16), RT_FIELD(resolution_scale),
             "render every camera at F times its resolution (rounded, at least 1), same view")
       .flag("--skip-existing", RT_FIELD(skip_existing),
-            "render only the images whose file does not exist yet, so a job cut short "
-            "(interrupt, node failure, a cluster's time limit) resumes where it stopped")
+            "render only the cameras whose outputs (image, tone-mapped PNG, moments) are not "
+            "all there and complete, so a job cut short (interrupt, node failure, a cluster's "
+            "time limit) goes on where it stopped: a partial image is continued from its "
+            "checkpoint when it has one, else rendered again")
+      .real("--checkpoint", "S", Range::positive(), RT_FIELD(checkpoint_s),
+            "every S seconds (between passes) write the image so far, marked partial, and "
+            "<image>.rtcheckpoint beside it, the film that --resume continues; an interrupt "
+            "writes both too")
+      .default_is("only on an interrupt")
+      .flag("--resume", RT_FIELD(resume),
+            "continue every camera that has an <image>.rtcheckpoint to its full sample count, "
+            "with the bytes of an uninterrupted render (a checkpoint made with other settings "
+            "is refused; it is removed once the image is complete), skip those whose outputs "
+            "are complete (as --skip-existing), and keep checkpoints on an interrupt")
       .integer("--tile-rows", "N", Range::closed(1, 1 << 20), RT_FIELD(tile_rows),
                "under mpirun: rows of a tile when images are cut among the ranks (rounded up "
                "to a multiple of 32); the images do not depend on it")

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "device/device.h"
-#include "prepare/flat_scene.h"
 #include "io/png_io.h"
+#include "prepare/flat_scene.h"
 #include "util/args.h"
 
 namespace rt {
@@ -30,8 +30,10 @@ struct CliOptions {
   bool moments = false;                     // Also write <image>.moments.exr beside each PNG.
   double resolution_scale = 1.0;            // Scales every camera's pixel count, same view.
   Quantize quantize = Quantize::kTruncate;  // Radiance to 8 bits, as the course's renderer.
-  bool skip_existing = false;               // Render only the images whose file does not exist yet.
-  int tile_rows = 0;  // MPI: rows of a tile when images are cut (0: automatic).
+  bool skip_existing = false;  // Render only the cameras whose outputs are not all complete.
+  double checkpoint_s = 0;     // Seconds between checkpoints (0: only on an interrupt).
+  bool resume = false;         // Continue every camera that has a matching checkpoint.
+  int tile_rows = 0;           // MPI: rows of a tile when images are cut (0: automatic).
   RenderOptions render;
   LoadOptions load;  // --strict
 };

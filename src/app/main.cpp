@@ -11,6 +11,7 @@
 #include "cli.h"
 #include "device/cl/cl_platform.h"
 #include "device/device.h"
+#include "image_checkpoint.h"
 #include "integrator/render_scheduler.h"
 #include "interrupt.h"
 #include "job_count.h"
@@ -83,6 +84,8 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
       throw std::runtime_error(cam.image_name + ": " + e.what());
     }
   }
+  // Every checkpoint --resume continues is checked before the first render, as memory is.
+  for (int c : cameras) rt::ImageCheckpoint(opt, s, c, prepared, *device);
   for (size_t k = 0; k < cameras.size(); ++k) {
     const int c = cameras[k];
     try {
@@ -91,6 +94,7 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
       throw std::runtime_error(s.path + ": Cameras > Camera " + std::to_string(c) + ": " +
                                e.what());
     }
+    rt::ImageCheckpoint checkpoint(opt, s, c, prepared, *device);
     const Camera& fc = flat.header.camera;
     const std::string label = "[" + std::to_string(++job.started) + "/" +
                               std::to_string(job.total) + "] " + s.desc.cameras[c].image_name;
@@ -99,10 +103,10 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
     rt::DeviceLoadInfo load;
     rt::RenderResult r = rt::render_camera(*device, flat, prepared.kernel, progress,
                                            rt::camera_stop_rule(opt.render.stop, s.desc.cameras[c]),
-                                           &rt::stop_requested(), &load);
+                                           &rt::stop_requested(), &load, checkpoint.hooks(*device));
     progress.finish();
     const std::string out = rt::image_path(opt, s, c);
-    rt::write_outputs(opt, s.path, c, s.desc.cameras[c], device->name(), r, out);
+    const std::string saved = checkpoint.finish(r, rt::stop_requested().load());
     rt::print_wrote(opt.quiet, out, r.spp, r.seconds);
     if (!opt.quiet && !opt.render.cull_back_faces && !job.back_face_notice_given) {
       const std::string text = rt::back_face_notice(rt::back_face_share(fc, r.primary));
@@ -112,8 +116,9 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
     if (opt.stats) print_stats(out, *device, s, prepared, load, r);
     if (rt::stop_requested().load()) {
       std::fprintf(
-          stderr, "raytracer: interrupted: %s written with %d of %d samples per pixel%s\n",
-          out.c_str(), r.spp, fc.samples,
+          stderr, "raytracer: interrupted: %s written with %d of %d samples per pixel%s%s%s\n",
+          out.c_str(), r.spp, fc.samples, saved.empty() ? "" : " and its checkpoint ",
+          saved.empty() ? "" : saved.c_str(),
           k + 1 < cameras.size() || !last_scene ? "; the cameras after it were not rendered" : "");
       return false;
     }

@@ -9,12 +9,14 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "util/errors.h"
 #include "image/tonemap.h"
+#include "io/checkpoint.h"
 #include "io/image_output.h"
 #include "io/moments.h"
+#include "io/partial_mark.h"
 #include "io/png_io.h"
 #include "output_check.h"
+#include "util/errors.h"
 
 namespace rt {
 
@@ -55,12 +57,37 @@ std::string image_path(const CliOptions& opt, const JobScene& scene, int camera)
   return (std::filesystem::path(opt.output_dir) / scene.desc.cameras[camera].image_name).string();
 }
 
+std::vector<std::string> camera_outputs(const CliOptions& opt, const CameraDesc& cam,
+                                        const std::string& image) {
+  std::vector<std::string> files{image};
+  if (cam.tonemap && is_exr_path(image)) files.push_back(tonemap_path_for(image));
+  if (opt.moments) files.push_back(moments_path_for(image));
+  return files;
+}
+
 std::vector<int> job_cameras(const CliOptions& opt, const JobScene& scene) {
   std::vector<int> cameras;
   for (int c = 0; c < static_cast<int>(scene.desc.cameras.size()); ++c) {
     if (opt.camera >= 0 && c != opt.camera) continue;
-    std::error_code ec;
-    if (opt.skip_existing && std::filesystem::exists(image_path(opt, scene, c), ec)) continue;
+    if (opt.skip_existing || opt.resume) {
+      const std::string image = image_path(opt, scene, c);
+      std::string why;  // The first partial output; empty when one is missing.
+      bool complete = true;
+      for (const std::string& f : camera_outputs(opt, scene.desc.cameras[c], image)) {
+        const OutputStatus st = output_status(f);
+        if (st.state == OutputState::kComplete) continue;
+        complete = false;
+        if (st.state == OutputState::kPartial) why = f + " is partial (" + st.mark + ")";
+        break;
+      }
+      if (complete) continue;
+      std::error_code ec;
+      if (!why.empty() && !opt.quiet)
+        std::fprintf(stderr, "notice: %s: %s\n", why.c_str(),
+                     std::filesystem::exists(checkpoint_path_for(image), ec)
+                         ? "continuing it from its checkpoint"
+                         : "no checkpoint, rendering it again");
+    }
     cameras.push_back(c);
   }
   return cameras;
@@ -86,12 +113,13 @@ uint64_t output_bytes(uint64_t pixels, bool moments) {
 
 void write_outputs(const CliOptions& opt, const std::string& scene_path, int camera,
                    const CameraDesc& cam, const std::string& device_name, const RenderResult& r,
-                   const std::string& out) {
-  if (uint64_t bad = r.nonfinite())
+                   const std::string& out, const std::string& samples_mark) {
+  const uint64_t bad = samples_mark.empty() ? r.nonfinite() : 0;
+  if (bad)
     std::fprintf(stderr, "warning: %s: %llu samples gave NaN or infinite radiance (left out)\n",
                  std::filesystem::path(out).filename().c_str(),
                  static_cast<unsigned long long>(bad));
-  write_image(out, r.width, r.height, r.rgb(), opt.quantize);
+  write_image(out, r.width, r.height, r.rgb(), opt.quantize, samples_mark);
   // hw5: a camera with <Tonemap> whose image is HDR also gets the photographic operator's
   // 8-bit image of the same film, beside it with the extension .png.
   if (cam.tonemap && is_exr_path(out)) {
@@ -101,12 +129,15 @@ void write_outputs(const CliOptions& opt, const std::string& scene_path, int cam
     film.height = r.height;
     film.max_value = 0.0f;
     film.pixels = r.rgb();
-    write_png(png, TonemapPhotographic(film, cam.tonemap_params));
+    Image8 mapped = TonemapPhotographic(film, cam.tonemap_params);
+    mapped.samples_mark = samples_mark;
+    write_png(png, mapped);
   }
   if (opt.moments) {
     MomentInfo info{
         opt.render.seed, r.spp,      opt.render.filter == RT_FILTER_GAUSSIAN ? "gaussian" : "box",
-        device_name,     scene_path, camera};
+        device_name,     scene_path, camera,
+        samples_mark};
     write_moments(moments_path_for(out), moments_from_render(r, info));
   }
 }

@@ -29,8 +29,14 @@ void check_output_dir(const CliOptions& opt);
 // Where camera `camera` of `scene` is written.
 std::string image_path(const CliOptions& opt, const JobScene& scene, int camera);
 
-// The cameras of `scene` to render: --camera's or all, without those whose image exists
-// when --skip-existing is given.
+// Every file camera `camera` writes to `image`: the image, the tone-mapped PNG beside an
+// .exr of a camera with <Tonemap>, and with --moments its moment file.
+std::vector<std::string> camera_outputs(const CliOptions& opt, const CameraDesc& cam,
+                                        const std::string& image);
+
+// The cameras of `scene` to render: --camera's or all; with --skip-existing or --resume
+// without those whose outputs all exist and are complete (io/partial_mark.h); a partial
+// one is named (unless --quiet) with whether its checkpoint continues it.
 std::vector<int> job_cameras(const CliOptions& opt, const JobScene& scene);
 
 // The device the options ask for; `gpu_rank` and `threads` as DeviceOptions has them.
@@ -41,9 +47,11 @@ uint64_t output_bytes(uint64_t pixels, bool moments);
 
 // Writes the image (and with --moments its moment file) of camera `camera` of the scene
 // file `scene_path` to `out`, atomically, and warns about non-finite samples.
-// A camera with <Tonemap> whose image is HDR also gets its tone-mapped PNG.
+// A camera with <Tonemap> whose image is HDR also gets its tone-mapped PNG. A non-empty
+// `samples_mark` marks every output partial (io/partial_mark.h) and leaves the warning to
+// the finished image.
 void write_outputs(const CliOptions& opt, const std::string& scene_path, int camera,
                    const CameraDesc& cam, const std::string& device_name, const RenderResult& r,
-                   const std::string& out);
+                   const std::string& out, const std::string& samples_mark = "");
 
 }  // namespace rt

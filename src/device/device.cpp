@@ -13,6 +13,10 @@
 
 namespace rt {
 
+void RenderDevice::write_film(const std::vector<PixelAccum>&, const std::vector<PrimaryInfo>&) {
+  throw std::runtime_error(name() + ": cannot load a saved film");
+}
+
 std::string format_bytes(uint64_t bytes) {
   const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB"};
   double v = static_cast<double>(bytes);

@@ -87,6 +87,12 @@ class RenderDevice {
   // Copies the film out: accumulators (every pass may need them) and first-hit facts.
   virtual void read_accum(std::vector<PixelAccum>* accum) = 0;
   virtual void read_primary(std::vector<PrimaryInfo>* primary) = 0;
+  // Replaces the loaded camera's film by a saved one (a checkpoint's, read_accum's and
+  // read_primary's copies, one record a pixel), so render() continues from the samples it
+  // holds. Throws std::runtime_error when the sizes do not match the camera or the device
+  // cannot (the default).
+  virtual void write_film(const std::vector<PixelAccum>& accum,
+                          const std::vector<PrimaryInfo>& primary);
 };
 
 // The BVH width to flatten a scene with for `device`: its own (RenderDevice::bvh_width)

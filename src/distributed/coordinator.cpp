@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/render_job.h"
+#include "io/checkpoint.h"
 
 namespace rt {
 namespace {
@@ -87,6 +89,8 @@ void JobCoordinator::complete(int rank, int32_t index, int spp, double busy_s,
   const PlannedImage& im = plan_.images[t.image];
   const auto t0 = std::chrono::steady_clock::now();
   write_outputs(opt_, opt_.scenes[im.scene], im.camera, im.desc, device_name_, f.r, im.path);
+  std::error_code ec;  // A checkpoint the image was continued from is done with.
+  std::filesystem::remove(checkpoint_path_for(im.path), ec);
   write_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ++images_written_;
   progress_.clear();

@@ -190,6 +190,12 @@ class LocalWorker {
 // Rank 0: hands out tasks, gathers bands, writes images, until every rank has stopped.
 int coordinate(const CliOptions& opt, const NodePlace& place) {
   const auto start = std::chrono::steady_clock::now();
+  // Rank 0 gathers each tile only when it is done, so it has no film to save between
+  // passes; --resume and --skip-existing do continue checkpoints here (tile_worker.cpp).
+  if (opt.checkpoint_s > 0 && !opt.quiet)
+    std::fprintf(stderr,
+                 "notice: --checkpoint writes nothing under mpirun (a checkpoint made in one "
+                 "process is continued here with --resume)\n");
   std::string setup_error;
   JobPlan plan;
   try {

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "app/image_checkpoint.h"
 #include "integrator/render_scheduler.h"
 
 namespace rt {
@@ -36,6 +37,11 @@ TileResult TileWorker::render(const TileTask& task) {
     }
     prepare_camera(prepared_, scene_.desc, task.camera);
     device_->load(prepared_.flat, prepared_.kernel);
+    // A checkpoint's film, whole: this rank's tiles of the image continue their rows of it.
+    resume_ = ImageCheckpoint(opt_, scene_, task.camera, prepared_, *device_).resume_only();
+    if (resume_.accum) device_->write_film(*resume_.accum, *resume_.primary);
+    resume_.accum = nullptr;
+    resume_.primary = nullptr;
     camera_ = task.camera;
   }
   const Camera& cam = prepared_.flat.header.camera;
@@ -48,7 +54,8 @@ TileResult TileWorker::render(const TileTask& task) {
   TileResult out;
   out.task = task;
   out.spp = sample_rows(*device_, cam, task.row_begin, task.row_end, quiet,
-                        camera_stop_rule(opt_.render.stop, scene_.desc.cameras[task.camera]));
+                        camera_stop_rule(opt_.render.stop, scene_.desc.cameras[task.camera]),
+                        nullptr, nullptr, &resume_);
   device_->read_accum(&accum_);
   device_->read_primary(&primary_);
   const size_t first = static_cast<size_t>(task.row_begin) * cam.width;

@@ -10,6 +10,7 @@
 #include "app/render_job.h"
 #include "device/device.h"
 #include "distributed/job_plan.h"
+#include "integrator/render_scheduler.h"
 
 namespace rt {
 
@@ -38,6 +39,7 @@ class TileWorker {
   int scene_index_ = -1, camera_ = -1;
   JobScene scene_;
   PreparedScene prepared_;
+  PassHooks resume_;  // The samples the loaded camera's checkpoint holds (its film loaded).
   std::vector<PixelAccum> accum_;
   std::vector<PrimaryInfo> primary_;
 };

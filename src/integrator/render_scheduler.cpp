@@ -74,11 +74,12 @@ void RenderScheduler::record(const RenderWork& work, double seconds) {
 
 int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_end,
                 Progress& progress, const StopRule& stop, const std::atomic<bool>* cancel,
-                bool* cancelled) {
+                bool* cancelled, const PassHooks* hooks) {
   using Clock = std::chrono::steady_clock;
   RenderScheduler scheduler(cam.width, cam.height, cam.samples, device.row_alignment(), row_begin,
                             row_end);
   if (stop.time_limit_s > 0 || stop.noise_target > 0) scheduler.keep_checkpoints();
+  if (hooks) scheduler.start_at(std::min(hooks->start_sample, cam.samples));
   const auto start = Clock::now();
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -123,6 +124,7 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
     }
     const std::vector<RenderWork> next = scheduler.plan();
     if (next.empty()) break;
+    if (hooks && hooks->after_pass) hooks->after_pass(scheduler.samples_done());
     if (stop.time_limit_s > 0 &&
         since(start) + scheduler.estimate_seconds(next) > stop.time_limit_s)
       break;
@@ -137,16 +139,18 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
 
 RenderResult render_camera(RenderDevice& device, const FlatScene& flat, const KernelConfig& kernel,
                            Progress& progress, const StopRule& stop,
-                           const std::atomic<bool>* cancel, DeviceLoadInfo* load_info) {
+                           const std::atomic<bool>* cancel, DeviceLoadInfo* load_info,
+                           const PassHooks* hooks) {
   const Camera& cam = flat.header.camera;
   DeviceLoadInfo info = device.load(flat, kernel);
   if (load_info) *load_info = info;
+  if (hooks && hooks->accum) device.write_film(*hooks->accum, *hooks->primary);
   progress.begin();  // The line's elapsed time and rate are the sampling's, as --stats's.
   RenderResult r;
   r.width = cam.width;
   r.height = cam.height;
   const auto start = std::chrono::steady_clock::now();
-  r.spp = sample_rows(device, cam, 0, cam.height, progress, stop, cancel, &r.cancelled);
+  r.spp = sample_rows(device, cam, 0, cam.height, progress, stop, cancel, &r.cancelled, hooks);
   device.read_accum(&r.accum);
   device.read_primary(&r.primary);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -20,10 +20,11 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <vector>
 
-#include "device/device.h"
 #include "app/progress.h"
+#include "device/device.h"
 #include "integrator/render.h"
 
 namespace rt {
@@ -48,6 +49,9 @@ class RenderScheduler {
   int samples_done() const { return done_; }
   // Keeps the fourfold growth to the last sample (a stop rule checks between passes).
   void keep_checkpoints() { take_rest_ = false; }
+  // The film already holds samples [0, sample) (a checkpoint's): the first pass, one sample
+  // that measures the costs, starts there.
+  void start_at(int sample) { done_ = sample; }
 
  private:
   int width_, height_, samples_, align_, row_begin_, row_end_;
@@ -63,16 +67,28 @@ class RenderScheduler {
 // stops sampling at the end of the current pass (RenderResult::cancelled). *load_info
 // receives what loading the scene cost. Throws std::runtime_error (one line) on a device
 // failure.
+// A render continued from a saved film, and what runs between its passes.
+struct PassHooks {
+  int start_sample = 0;  // The film holds samples [0, start_sample).
+  // render_camera: the saved film to load after device.load (RenderDevice::write_film).
+  const std::vector<PixelAccum>* accum = nullptr;
+  const std::vector<PrimaryInfo>* primary = nullptr;
+  // Called after each pass that more passes follow, with the samples taken, the film on the
+  // device (a checkpoint reads it there).
+  std::function<void(int samples_done)> after_pass;
+};
+
 RenderResult render_camera(RenderDevice& device, const FlatScene& flat, const KernelConfig& kernel,
                            Progress& progress, const StopRule& stop = StopRule(),
                            const std::atomic<bool>* cancel = nullptr,
-                           DeviceLoadInfo* load_info = nullptr);
+                           DeviceLoadInfo* load_info = nullptr, const PassHooks* hooks = nullptr);
 
 // The pass loop of render_camera for rows [row_begin, row_end) of the camera `device` has
 // loaded (the film of those rows empty): takes every sample, or stops by `stop`/`cancel`.
 // Returns the samples per pixel taken; the film stays on the device.
 int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_end,
                 Progress& progress, const StopRule& stop = StopRule(),
-                const std::atomic<bool>* cancel = nullptr, bool* cancelled = nullptr);
+                const std::atomic<bool>* cancel = nullptr, bool* cancelled = nullptr,
+                const PassHooks* hooks = nullptr);
 
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include "io/image_output.h"
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfStringAttribute.h>
 
 #include <cctype>
 #include <stdexcept>
@@ -9,17 +10,20 @@
 
 #include "io/exr_file.h"
 #include "io/jpeg_io.h"
+#include "io/partial_mark.h"
 #include "io/png_io.h"
 
 namespace rt {
 namespace {
 
-void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb) {
+void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
+               const std::string& samples_mark) {
   try {
     if (width <= 0 || height <= 0 || rgb.size() != static_cast<size_t>(width) * height * 3)
       throw std::runtime_error("inconsistent image");
     Imf::Header h(width, height);
     h.compression() = Imf::ZIP_COMPRESSION;
+    if (!samples_mark.empty()) h.insert(kSamplesMarkKey, Imf::StringAttribute(samples_mark));
     Imf::FrameBuffer fb;
     const char* const names[3] = {"R", "G", "B"};
     const size_t xs = 3 * sizeof(float), ys = xs * width;
@@ -57,23 +61,17 @@ std::string tonemap_path_for(const std::string& image) {
 }
 
 void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb,
-                 Quantize quantize) {
-  switch (image_format_of(path)) {
-    case ImageFormat::kExr:
-      write_exr(path, width, height, rgb);
-      return;
-    case ImageFormat::kJpeg:
-      write_jpeg(path, to_8bit(width, height, rgb, quantize));
-      return;
-    case ImageFormat::kPng:
-      write_png(path, to_8bit(width, height, rgb, quantize));
-      return;
-    case ImageFormat::kUnknown:
-      break;
-  }
-  throw std::runtime_error(path +
-                           ": cannot write an image: the extension is not .png, .jpg, "
-                           ".jpeg or .exr");
+                 Quantize quantize, const std::string& samples_mark) {
+  const ImageFormat format = image_format_of(path);
+  if (format == ImageFormat::kUnknown)
+    throw std::runtime_error(path +
+                             ": cannot write an image: the extension is not .png, .jpg, "
+                             ".jpeg or .exr");
+  if (format == ImageFormat::kExr) return write_exr(path, width, height, rgb, samples_mark);
+  Image8 image8 = to_8bit(width, height, rgb, quantize);
+  image8.samples_mark = samples_mark;
+  if (format == ImageFormat::kJpeg) return write_jpeg(path, image8);
+  write_png(path, image8);
 }
 
 }  // namespace rt

@@ -15,8 +15,9 @@ namespace rt {
 
 // `rgb`: 3 floats per pixel, row-major, top row first. Throws std::runtime_error
 // ("<path>: cannot write PNG|EXR: <reason>") on failure, leaving no file behind.
+// `samples_mark` non-empty: the image is partial and says so (io/partial_mark.h).
 void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb,
-                 Quantize quantize = Quantize::kTruncate);
+                 Quantize quantize = Quantize::kTruncate, const std::string& samples_mark = "");
 
 // True when `path` names an OpenEXR file (".exr", any case).
 bool is_exr_path(const std::string& path);

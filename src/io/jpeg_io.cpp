@@ -4,6 +4,7 @@
 
 #include "image/jpeg_error.h"
 #include "io/file_util.h"
+#include "io/partial_mark.h"
 
 namespace rt {
 namespace {
@@ -45,6 +46,11 @@ void write_jpeg(const std::string& path, const Image8& image, int quality) {
   for (int c = 0; c < 3; ++c)
     cinfo.comp_info[c].h_samp_factor = cinfo.comp_info[c].v_samp_factor = 1;
   jpeg_start_compress(&cinfo, TRUE);
+  if (!image.samples_mark.empty()) {
+    const std::string comment = std::string(kSamplesMarkKey) + "=" + image.samples_mark;
+    jpeg_write_marker(&cinfo, JPEG_COM, reinterpret_cast<const JOCTET*>(comment.data()),
+                      static_cast<unsigned>(comment.size()));
+  }
   while (cinfo.next_scanline < cinfo.image_height) {
     JSAMPROW row = const_cast<JSAMPROW>(image.rgb.data() +
                                         static_cast<size_t>(cinfo.next_scanline) * image.width * 3);

@@ -1,4 +1,5 @@
 #include "io/moments.h"
+#include "io/partial_mark.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -117,6 +118,8 @@ void write_moments(const std::string& path, const MomentImage& m) {
     h.insert("rt.device", Imf::StringAttribute(m.info.device));
     h.insert("rt.scene", Imf::StringAttribute(m.info.scene));
     h.insert("rt.camera", Imf::IntAttribute(m.info.camera));
+    if (!m.info.samples_mark.empty())
+      h.insert(kSamplesMarkKey, Imf::StringAttribute(m.info.samples_mark));
     MomentImage copy = m;  // The frame buffer wants mutable storage.
     std::vector<uint32_t> inst(m.instance.begin(), m.instance.end());
     std::vector<uint32_t> prim(m.primitive.begin(), m.primitive.end());

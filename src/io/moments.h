@@ -15,7 +15,8 @@
 //   first.primitive  UINT   triangle/sphere index within the instance; 4294967295 likewise
 //   first.N.X/Y/Z    FLOAT  shading normal at that hit (facing as modelled); 0 on a miss
 // Header attributes: rt.moments (int, 1), rt.seed (int), rt.spp (int), rt.filter
-// ("box"|"gaussian"), rt.device (string), rt.scene (string), rt.camera (int).
+// ("box"|"gaussian"), rt.device (string), rt.scene (string), rt.camera (int); a partial
+// render's file also rt:samples (string, "<spp> of <asked>", io/partial_mark.h).
 // With the box filter (default) every sample has weight 1, so R/G/B is the plain sample
 // mean the statistical tests assume; with the Gaussian filter it is a weighted mean and
 // the variance is only approximate, which `compare` refuses unless told otherwise.
@@ -36,6 +37,7 @@ struct MomentInfo {
   std::string device;
   std::string scene;
   int camera = 0;
+  std::string samples_mark;  // A partial render's "<spp> of <asked>" (io/partial_mark.h).
 };
 
 struct MomentImage {

@@ -7,6 +7,7 @@
 // set before the setjmp, and all the real work (with its locals) happens in a helper that has no
 // object with a destructor alive when libpng may jump out of it.
 #include "io/png_io.h"
+#include "io/partial_mark.h"
 
 #include <png.h>
 
@@ -72,6 +73,14 @@ void encode_body(png_structp png, png_infop info, const Image8& image, std::vect
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_text text{};
+  if (!image.samples_mark.empty()) {
+    text.compression = PNG_TEXT_COMPRESSION_NONE;
+    text.key = const_cast<char*>(kSamplesMarkKey);
+    text.text = const_cast<char*>(image.samples_mark.c_str());
+    text.text_length = image.samples_mark.size();
+    png_set_text(png, info, &text, 1);
+  }
   png_write_info(png, info);
   const size_t stride = static_cast<size_t>(image.width) * 3;
   for (int y = 0; y < image.height; ++y) png_write_row(png, image.rgb.data() + y * stride);

@@ -12,6 +12,10 @@ namespace rt {
 struct Image8 {
   int width = 0, height = 0;
   std::vector<uint8_t> rgb;
+  // A partial render's sample count ("123 of 900", io/partial_mark.h), written as the
+  // PNG's tEXt chunk (or the JPEG's comment) kSamplesMarkKey; empty for a finished image,
+  // which then carries no chunk and keeps its bytes.
+  std::string samples_mark;
 };
 
 // How radiance becomes an 8-bit level after clamping to [0, 255]. The course's renderer

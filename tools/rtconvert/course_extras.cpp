@@ -144,8 +144,8 @@ json device_light_to_json(const Light& l) {
           {"position", to_json(l.position)},
           {"direction", to_json(l.normal)},
           {"emission", to_json(l.emission)},
-          {"cosFalloff", l.param0},
-          {"cosCoverage", l.param1}};
+          {"cosFalloff", RT_SPOT_COS_FALLOFF(&l)},
+          {"cosCoverage", RT_SPOT_COS_COVERAGE(&l)}};
 }
 
 Light device_light_from_json(const json& j) {
@@ -158,8 +158,8 @@ Light device_light_from_json(const json& j) {
   l.normal = float3_from(j.at("direction"));
   l.emission = float3_from(j.at("emission"));
   if (l.type == RT_LIGHT_SPOT) {
-    l.param0 = j.at("cosFalloff").get<float>();
-    l.param1 = j.at("cosCoverage").get<float>();
+    RT_SPOT_COS_FALLOFF(&l) = j.at("cosFalloff").get<float>();
+    RT_SPOT_COS_COVERAGE(&l) = j.at("cosCoverage").get<float>();
   }
   return l;
 }

@@ -145,8 +145,8 @@ void export_pbrt(const rt::SceneDesc& s, const std::string& path, Report& report
       o << "AttributeBegin\n  LightSource \"distant\" \"point3 from\" [ 0 0 0 ] \"point3 to\" [ "
         << v(d) << " ] \"rgb L\" [ " << v(l.emission) << " ]\nAttributeEnd\n";
     if (l.type == RT_LIGHT_SPOT) {
-      const double cover = std::acos(l.param1) * 180 / M_PI,
-                   fall = std::acos(l.param0) * 180 / M_PI;
+      const double cover = std::acos(RT_SPOT_COS_COVERAGE(&l)) * 180 / M_PI,
+                   fall = std::acos(RT_SPOT_COS_FALLOFF(&l)) * 180 / M_PI;
       o << "AttributeBegin\n  LightSource \"spot\" \"point3 from\" [ " << v(p)
         << " ] \"point3 to\" [ " << v(p + d) << " ] \"rgb I\" [ " << v(l.emission)
         << " ] \"float coneangle\" " << cover << " \"float conedeltaangle\" " << cover - fall

@@ -156,9 +156,9 @@ void write_lights(std::ostream& x, const rt::SceneDesc& s) {
       x << "    <SpotLight id=\"" << ++id << "\">\n      <Position>" << vec(l.position)
         << "</Position>\n      <Direction>" << vec(l.normal) << "</Direction>\n      <Intensity>"
         << vec(l.emission) << "</Intensity>\n      <CoverageAngle>"
-        << num(std::acos(static_cast<double>(l.param1)) * 360 / M_PI)
+        << num(std::acos(static_cast<double>(RT_SPOT_COS_COVERAGE(&l))) * 360 / M_PI)
         << "</CoverageAngle>\n      <FalloffAngle>"
-        << num(std::acos(static_cast<double>(l.param0)) * 360 / M_PI)
+        << num(std::acos(static_cast<double>(RT_SPOT_COS_FALLOFF(&l))) * 360 / M_PI)
         << "</FalloffAngle>\n    </SpotLight>\n";
   }
   x << "  </Lights>\n";

@@ -45,6 +45,20 @@ class ClDevice final : public RenderDevice {
   uint64_t render(const RenderWork& work) override;
   void read_accum(std::vector<PixelAccum>* accum) override { read(accum_, accum); }
   void read_primary(std::vector<PrimaryInfo>* primary) override { read(primary_, primary); }
+  void write_film(const std::vector<PixelAccum>& accum,
+                  const std::vector<PrimaryInfo>& primary) override {
+    if (accum.size() != pixels_ || primary.size() != pixels_)
+      throw std::runtime_error("the saved film has " + std::to_string(accum.size()) +
+                               " pixels, the camera " + std::to_string(pixels_));
+    if (pixels_ == 0) return;
+    try {
+      queue_.enqueueWriteBuffer(accum_, CL_TRUE, 0, sizeof(PixelAccum) * pixels_, accum.data());
+      queue_.enqueueWriteBuffer(primary_, CL_TRUE, 0, sizeof(PrimaryInfo) * pixels_,
+                                primary.data());
+    } catch (const cl::Error& e) {
+      fail(e);
+    }
+  }
 
  private:
   void launch(const RenderWork& work);

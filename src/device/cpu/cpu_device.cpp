@@ -72,4 +72,13 @@ uint64_t CpuDevice::render(const RenderWork& work) {
   return rays.value.load();
 }
 
+void CpuDevice::write_film(const std::vector<PixelAccum>& accum,
+                           const std::vector<PrimaryInfo>& primary) {
+  if (accum.size() != accum_.size() || primary.size() != primary_.size())
+    throw std::runtime_error("the saved film has " + std::to_string(accum.size()) +
+                             " pixels, the camera " + std::to_string(accum_.size()));
+  accum_ = accum;
+  primary_ = primary;
+}
+
 }  // namespace rt

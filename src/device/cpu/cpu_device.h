@@ -17,6 +17,8 @@ class CpuDevice final : public RenderDevice {
   uint64_t render(const RenderWork& work) override;
   void read_accum(std::vector<PixelAccum>* accum) override { *accum = accum_; }
   void read_primary(std::vector<PrimaryInfo>* primary) override { *primary = primary_; }
+  void write_film(const std::vector<PixelAccum>& accum,
+                  const std::vector<PrimaryInfo>& primary) override;
 
  private:
   int threads_;

@@ -1,0 +1,60 @@
+// The checkpoints of one camera's render (--checkpoint, --resume, an interrupt): the
+// key of everything that changes its pixels, the saved film it continues from, the partial
+// image and checkpoint written between passes, and the outputs written at its end.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "integrator/render_scheduler.h"
+#include "io/checkpoint.h"
+#include "render_job.h"
+
+namespace rt {
+
+class ImageCheckpoint {
+ public:
+  // Camera `camera` of `scene`, prepared for `device`. With --resume or --skip-existing,
+  // reads its <image>.rtcheckpoint when there is one; throws std::runtime_error (one line
+  // naming the first field that differs) when that was made with other settings.
+  ImageCheckpoint(const CliOptions& opt, const JobScene& scene, int camera,
+                  const PreparedScene& prepared, const RenderDevice& device);
+
+  // The hooks of render_camera: the saved film to start from, and with --checkpoint the
+  // saves between passes.
+  const PassHooks* hooks(RenderDevice& device);
+  // The saved film alone, without the saves between passes: a distributed rank renders
+  // only a band of the image, which rank 0 writes (distributed/tile_worker.cpp).
+  PassHooks resume_only() const {
+    PassHooks h = hooks_;
+    h.after_pass = nullptr;
+    return h;
+  }
+
+  // Writes the render's outputs: an interrupted one's (fewer samples than asked) marked
+  // partial, with its checkpoint beside them when checkpoints are asked for (--checkpoint,
+  // --resume, a render continued from one; a plain interrupt leaves no other file); a
+  // finished one's without a mark, its checkpoint removed. Returns the checkpoint's path
+  // when one was written, else "".
+  std::string finish(const RenderResult& r, bool interrupted);
+
+ private:
+  void save(RenderDevice& device, int spp);
+  bool keeps_checkpoints() const { return opt_.checkpoint_s > 0 || opt_.resume || saved_.spp > 0; }
+  const CheckpointKey& key();
+  void write(const RenderResult& r, bool partial);
+
+  const CliOptions& opt_;
+  const JobScene& scene_;
+  int camera_;
+  const PreparedScene& prepared_;
+  std::string device_name_, image_, path_;
+  int asked_ = 0;
+  CheckpointKey key_;
+  Checkpoint saved_;
+  PassHooks hooks_;
+  std::chrono::steady_clock::time_point last_save_;
+};
+
+}  // namespace rt
