@@ -1,9 +1,8 @@
-# Tests of `compare` (included from tests/CMakeLists.txt): unit tests of its statistics,
-# the calibration of its verdicts on planted biases, and the kernel-vs-reference
-# validation of every course scene (label cl_vs_cpu; cl_vs_cpu_full with
-# -DRT_FULL_CL_VS_CPU=ON).
+# Tests of `compare` (included from tests/CMakeLists.txt): unit tests of its statistics and
+# moment files, and the calibration of its verdicts on planted biases. The kernel-vs-reference
+# validation of every course scene that uses it is in tests/course/course.cmake.
 
-add_executable(compare_tests compare_test.cpp moments_test.cpp)
+add_executable(compare_tests compare/stats_test.cpp compare/moments_test.cpp)
 target_link_libraries(compare_tests PRIVATE rtcompare GTest::gtest_main)
 target_compile_definitions(compare_tests PRIVATE RT_RAYTRACER_EXE="$<TARGET_FILE:raytracer>"
                                                  RT_COMPARE_EXE="$<TARGET_FILE:compare>"
@@ -22,21 +21,3 @@ add_test(NAME compare.calibration
                  --expect paired:8:light:1.02:0.9 --expect welch:1:shift:1:0.9
                  --expect paired:8:shift:1:0.9)
 set_tests_properties(compare.calibration PROPERTIES LABELS compare)
-
-option(RT_FULL_CL_VS_CPU "Register the full-size kernel-vs-reference tests" OFF)
-function(rt_cl_vs_cpu name scene)
-  set(script ${CMAKE_CURRENT_SOURCE_DIR}/cl_vs_cpu.sh)
-  set(work ${CMAKE_CURRENT_BINARY_DIR}/cl_vs_cpu)
-  set(exes $<TARGET_FILE:raytracer> $<TARGET_FILE:compare>)
-  add_test(NAME cl_vs_cpu.${name}
-           COMMAND bash ${script} ${exes} ${RT_SHARED_SCENES_DIR}/${scene} ${work}/${name} quick
-                   ${ARGN})
-  set_tests_properties(cl_vs_cpu.${name} PROPERTIES LABELS cl_vs_cpu SKIP_RETURN_CODE 77)
-  if(RT_FULL_CL_VS_CPU)
-    add_test(NAME cl_vs_cpu_full.${name}
-             COMMAND bash ${script} ${exes} ${RT_SHARED_SCENES_DIR}/${scene}
-                     ${work}_full/${name} full ${ARGN})
-    set_tests_properties(cl_vs_cpu_full.${name} PROPERTIES LABELS cl_vs_cpu_full
-                                                           SKIP_RETURN_CODE 77)
-  endif()
-endfunction()

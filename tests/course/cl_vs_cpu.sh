@@ -22,7 +22,7 @@ flags=("$@")
 # RT_TEST_PRECISION=double reruns the suite in double (README: precision).
 [ "${RT_TEST_PRECISION:-}" = double ] && flags+=(--precision double)
 
-source "$(dirname "$0")/scene_camera.sh"
+source "$(dirname "$0")/../support/scene_camera.sh"
 skip_unless_present "$scene"
 if ! "$rt" --list-devices > /dev/null 2>&1; then
   echo "SKIP: no OpenCL device"

@@ -3,7 +3,7 @@
 # attained by a member of a rounding-sized ensemble. Python 3's standard library only;
 # without an interpreter both skip and say why.
 find_package(Python3 COMPONENTS Interpreter QUIET)
-set(rt_explain ${CMAKE_CURRENT_SOURCE_DIR}/explain_pixels_test.py)
+set(rt_explain ${CMAKE_CURRENT_SOURCE_DIR}/tools/explain_pixels_test.py)
 if(Python3_Interpreter_FOUND)
   add_test(NAME explain_pixels.synthetic COMMAND ${Python3_EXECUTABLE} ${rt_explain} synthetic)
   add_test(NAME explain_pixels.spheres_crop

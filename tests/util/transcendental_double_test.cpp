@@ -20,4 +20,4 @@ struct TranscendentalBounds {
 const TranscendentalBounds kBounds = {6, 2.5, 6, 5, 5, 4, 4};
 
 #define RT_SUITE TranscendentalDouble
-#include "transcendental_cases.h"
+#include "support/transcendental_cases.h"

@@ -11,4 +11,4 @@ struct TranscendentalBounds {
 const TranscendentalBounds kBounds = {1.5, 1.5, 3, 16, 3, 4, 5};
 
 #define RT_SUITE TranscendentalFloat
-#include "transcendental_cases.h"
+#include "support/transcendental_cases.h"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "loader/render_both.h"
+#include "support/render_both.h"
 #include "support/loader_fixture.h"
 
 namespace rt::test {

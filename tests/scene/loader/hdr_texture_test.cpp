@@ -9,7 +9,7 @@
 
 #include "util/errors.h"
 #include "io/image_output.h"
-#include "loader/render_both.h"
+#include "support/render_both.h"
 #include "support/loader_fixture.h"
 
 namespace rt::test {

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "util/errors.h"
-#include "loader/render_both.h"
+#include "support/render_both.h"
 #include "support/loader_fixture.h"
 
 namespace rt::test {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "util/errors.h"
-#include "loader/render_both.h"
+#include "support/render_both.h"
 #include "support/loader_fixture.h"
 
 namespace rt::test {

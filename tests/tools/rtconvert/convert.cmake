@@ -1,7 +1,7 @@
-# rtconvert (tools/rtconvert; built only when Assimp is installed), label `convert`:
-# every course scene of tests/course_scenes.txt exported to glTF and imported back renders
-# the same image (tests/convert_roundtrip.sh), an OBJ + MTL import maps its materials and
-# lights as README.md's table says, and bad input gets one line and status 1.
+# rtconvert (tools/rtconvert; built only when Assimp is installed), label `convert`: every
+# course scene of tests/course/course_scenes.txt exported to glTF and imported back renders
+# the same image (tests/tools/rtconvert/convert_roundtrip.sh), an OBJ + MTL import maps its
+# materials and lights as README.md's table says, and bad input gets one line and status 1.
 if(NOT TARGET rtconvert)
   message(STATUS "convert tests skipped: rtconvert is not built (libassimp-dev missing)")
   return()
@@ -27,15 +27,15 @@ foreach(line IN LISTS rt_course_lines)
   endif()
   list(APPEND rt_convert_done "${scene}:${camera}")
   add_test(NAME convert.${name}
-           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/convert_roundtrip.sh $<TARGET_FILE:raytracer>
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/rtconvert/convert_roundtrip.sh $<TARGET_FILE:raytracer>
                    $<TARGET_FILE:rtconvert> $<TARGET_FILE:compare> ${RT_SHARED_SCENES_DIR}/${scene}
                    ${CMAKE_CURRENT_BINARY_DIR}/convert/${name} ${fields})
   set_tests_properties(convert.${name} PROPERTIES LABELS convert SKIP_RETURN_CODE 77)
 endforeach()
-add_executable(convert_tests convert_test.cpp)
+add_executable(convert_tests tools/rtconvert/convert_test.cpp)
 target_link_libraries(convert_tests PRIVATE rtconvert_lib GTest::gtest_main)
 gtest_discover_tests(convert_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX convert. PROPERTIES LABELS convert)
-add_test(NAME convert.cli COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/convert_cli.sh
+add_test(NAME convert.cli COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/rtconvert/convert_cli.sh
                                   $<TARGET_FILE:rtconvert> $<TARGET_FILE:raytracer>
                                   ${CMAKE_CURRENT_BINARY_DIR}/convert/cli)
 set_tests_properties(convert.cli PROPERTIES LABELS convert)

@@ -12,7 +12,7 @@ rt="$1" conv="$2" cmp="$3" scene="$4" work="$5"
 shift 5
 flags=("$@")
 
-source "$(dirname "$0")/scene_camera.sh"
+source "$(dirname "$0")/../../support/scene_camera.sh"
 skip_unless_present "$scene"
 scene_camera "$scene" "${flags[@]}"
 
