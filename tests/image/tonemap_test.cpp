@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "compare/image_metrics.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
-#include "compare/image_metrics.h"
 
 namespace {
 
@@ -64,7 +64,7 @@ TEST(Tonemap, RejectsGreyImages) {
 // from the full-precision film, so a pixel may differ by one level where the rounding to
 // half moved it across a boundary; nothing may differ by more. (The hw6 killeroo, glass
 // without next-event estimation, sponza and VeachAjar PNGs come from other runs than their
-// EXRs and are left out; see the notes.)
+// EXRs, so no tone mapping of the EXR gives them, and are left out.)
 TEST(Tonemap, ReproducesTheCoursesPngsFromTheirExrs) {
   const std::string dir = RT_SHARED_SCENES_DIR;
   const std::vector<std::string> pairs = {

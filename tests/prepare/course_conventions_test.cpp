@@ -1,8 +1,9 @@
 // Conventions of the course's renderer that its images show to the level of single pixels
-// (README, "Figures"): a shadow ray leaves along the shading normal. The ray offset of the
-// epsilon alone is checked in ray_offset_test. The course's float camera rays are checked by
-// the reference tests (tests/course_scenes.txt), whose thresholds they raised; here, where
-// they stop being used.
+// (the reference tests match those images byte for byte only with them): a shadow ray
+// leaves along the shading normal. The ray offset of the epsilon alone is checked in
+// tests/geometry/ray_offset_test.cpp. The course's float camera rays are checked by the
+// reference tests (tests/course/course_scenes.txt), whose thresholds they raised; here,
+// where they stop being used.
 #include <gtest/gtest.h>
 
 #include "prepare/course_camera.h"

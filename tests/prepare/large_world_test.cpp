@@ -20,8 +20,8 @@
 #include "family.h"
 #include "io/moments.h"
 #include "io/png_io.h"
-#include "support/stability_scenes.h"
 #include "support/device_harness.h"
+#include "support/stability_scenes.h"
 #include "welch.h"
 
 namespace {
@@ -83,9 +83,9 @@ void ExpectBitIdentical(const rt::RenderResult& cpu, const rt::RenderResult& cl,
 
 Vec3d Diagonal(double d) { return V(d, d, d); }
 
-// The case: a small sphere (radius 0.3) on a floor, lit by a point light and seen
-// from about 3 units away. Moved by (d, d, d), a float world resolves ulp(1e5) = 0.008
-// (3 % of the radius) and ulp(1e6) = 0.06.
+// The case a float world fails first: a small sphere (radius 0.3) on a floor, lit by a
+// point light and seen from about 3 units away. Moved by (d, d, d), a float world resolves
+// ulp(1e5) = 0.008 (3 % of the radius) and ulp(1e6) = 0.06.
 rt::SceneDesc SmallSphere() {
   Builder b;
   rt::SceneDesc& s = b.scene();
