@@ -6,7 +6,7 @@
 # skipped; a link's own anchor (#...) is dropped before the check. Paths are relative to the
 # file that holds the link, as a Markdown viewer reads them.
 #
-# usage: tests/doc_links_test.sh SOURCE_DIR
+# usage: tests/docs/doc_links_test.sh SOURCE_DIR
 set -eu
 root="${1:?usage: doc_links_test.sh SOURCE_DIR}"
 cd "$root"

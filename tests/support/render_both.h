@@ -1,4 +1,4 @@
-// The loader tests that compare renders (tests/loader/*_test.cpp): camera 0 of a loaded
+// The loader tests that compare renders (tests/scene/loader/*_test.cpp): camera 0 of a loaded
 // scene on the CPU reference and, where one is usable, on OpenCL, the two expected equal
 // bit for bit.
 #pragma once

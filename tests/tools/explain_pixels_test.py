@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Tests of tools/explain_ensemble.py and tools/explain_pixels.py.
 
-usage: tests/explain_pixels_test.py synthetic
-       tests/explain_pixels_test.py crop RAYTRACER SHARED_SCENES_DIR WORK_DIR
-       tests/explain_pixels_test.py model_pixel SHARED_SCENES_DIR
+usage: tests/tools/explain_pixels_test.py synthetic
+       tests/tools/explain_pixels_test.py crop RAYTRACER SHARED_SCENES_DIR WORK_DIR
+       tests/tools/explain_pixels_test.py model_pixel SHARED_SCENES_DIR
 
 synthetic: the arithmetic on made-up inputs (float ulps, the perturbed radii, the order
 of the members, each mechanism on a 4x3 image). crop: hw1 spheres rendered with six
