@@ -1,13 +1,15 @@
 // Cameras in the loader (src/scene/loader/cameras.cpp): required elements, degenerate gaze and up
-// vectors, lookAt cameras, resolution, near plane and sample counts.
+// vectors, lookAt cameras (with a <GazePoint> or a <Gaze>), resolution, near plane, sample
+// counts, and <Tonemap> with its bad values.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "util/errors.h"
 #include "scene/scene.h"
 #include "support/loader_fixture.h"
+#include "support/look_at_scene.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {
@@ -112,6 +114,51 @@ TEST_F(LoaderAccepts, CameraOutsideCameras) {
   EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
   expect_error(write("bad.xml", edited(xml, {{"<Up>0 1 0</Up>", "<Up>0 0 0</Up>"}})),
                {": Camera id=1 > Up: '0 0 0'"});
+}
+
+const char* kTonemap = R"(<Tonemap><TMO>Photographic</TMO><TMOOptions>0.01 2</TMOOptions>
+  <Saturation>0.8</Saturation><Gamma>2.4</Gamma></Tonemap>)";
+
+TEST(LoaderHw56, Tonemap) {
+  LookAtParts p;
+  EXPECT_FALSE(load_look_at(p).cameras[0].tonemap);
+  p.tonemap = kTonemap;
+  CameraDesc c = load_look_at(p).cameras[0];
+  ASSERT_TRUE(c.tonemap);
+  EXPECT_EQ(c.tonemap_params.key, 0.01);
+  EXPECT_EQ(c.tonemap_params.burn_percent, 2);
+  EXPECT_EQ(c.tonemap_params.saturation, 0.8);
+  EXPECT_EQ(c.tonemap_params.gamma, 2.4);
+}
+
+TEST(LoaderHw56, TonemapErrors) {
+  LookAtParts p;
+  p.tonemap = "<Tonemap><TMO>ACES</TMO><TMOOptions>0.18 1</TMOOptions></Tonemap>";
+  expect_look_at_error(p, "TMO: 'ACES' is not a known operator");
+  p.tonemap = "<Tonemap><TMO>Photographic</TMO><TMOOptions>0 1</TMOOptions></Tonemap>";
+  expect_look_at_error(p, "key value must be positive");
+  p.tonemap = "<Tonemap><TMO>Photographic</TMO><TMOOptions>0.18 100</TMOOptions></Tonemap>";
+  expect_look_at_error(p, "burn-out percentage");
+  p.tonemap = "<Tonemap><TMO>Photographic</TMO><TMOOptions>0.18</TMOOptions></Tonemap>";
+  expect_look_at_error(p, "TMOOptions");
+  p.tonemap =
+      "<Tonemap><TMO>Photographic</TMO><TMOOptions>0.18 1</TMOOptions>"
+      "<Gamma>0</Gamma></Tonemap>";
+  expect_look_at_error(p, "Gamma: '0' must be positive");
+}
+
+// hw6's lookAt cameras give a direction; it must equal the GazePoint form.
+TEST(LoaderHw56, LookAtWithGaze) {
+  LookAtParts p;
+  CameraDesc point = load_look_at(p).cameras[0];
+  p.camera = "<Gaze>0 0 -2</Gaze>";
+  CameraDesc dir = load_look_at(p).cameras[0];
+  EXPECT_EQ(point.gaze.z / std::fabs(point.gaze.z), -1.0);
+  EXPECT_EQ(dir.gaze.x, 0.0);
+  EXPECT_EQ(dir.gaze.z, -2.0);
+  EXPECT_EQ(point.top, dir.top);
+  p.camera = "";
+  expect_look_at_error(p, "GazePoint");
 }
 
 }  // namespace

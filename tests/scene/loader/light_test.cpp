@@ -1,12 +1,15 @@
 // Lights in the loader (src/scene/loader/lights.cpp): area lights given by a normal and a size or
-// by edge vectors, and negative light values.
+// by edge vectors, negative light values, and directional and spot lights with their bad
+// values.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
-#include "util/errors.h"
 #include "scene/scene.h"
 #include "support/loader_fixture.h"
+#include "support/look_at_scene.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {
@@ -66,6 +69,43 @@ TEST_F(LoaderAccepts, SquareAreaLight) {
   // Centred on Position: corner + (edge1 + edge2) / 2 == Position.
   EXPECT_NEAR(a.corner.y + (a.edge1.y + a.edge2.y) / 2, 1, 1e-6);
   EXPECT_NEAR(a.corner.z + (a.edge1.z + a.edge2.z) / 2, -2, 1e-6);
+}
+
+TEST(LoaderHw56, DirectionalAndSpotLights) {
+  LookAtParts p;
+  p.lights = R"(<DirectionalLight id="1"><Direction>0 0 -2</Direction>
+    <Radiance>200 100 50</Radiance></DirectionalLight>
+    <SpotLight id="1"><Position>1 2 3</Position><Direction>0 -3 0</Direction>
+    <Intensity>600 600 600</Intensity><CoverageAngle>90</CoverageAngle>
+    <FalloffAngle>60</FalloffAngle></SpotLight>)";
+  SceneDesc s = load_look_at(p);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.lights[0].type, RT_LIGHT_DIRECTIONAL);
+  EXPECT_EQ(s.lights[0].normal.z, -1.0f);  // Normalized.
+  EXPECT_EQ(s.lights[0].emission.y, 100.0f);
+  EXPECT_EQ(s.lights[1].type, RT_LIGHT_SPOT);
+  EXPECT_EQ(s.lights[1].position.z, 3.0f);
+  EXPECT_EQ(s.lights[1].normal.y, -1.0f);
+  EXPECT_FLOAT_EQ(s.lights[1].param0, std::cos(30 * M_PI / 180));  // Half the fall-off.
+  EXPECT_FLOAT_EQ(s.lights[1].param1, std::cos(45 * M_PI / 180));  // Half the coverage.
+}
+
+TEST(LoaderHw56, LightErrors) {
+  LookAtParts p;
+  p.lights = R"(<DirectionalLight id="1"><Direction>0 0 0</Direction>
+    <Radiance>1 1 1</Radiance></DirectionalLight>)";
+  expect_look_at_error(p, "Direction: '0 0 0' is a zero-length vector");
+  p.lights = R"(<DirectionalLight id="1"><Direction>0 0 1</Direction>
+    <Radiance>-1 1 1</Radiance></DirectionalLight>)";
+  expect_look_at_error(p, "is negative");
+  const std::string spot = R"(<SpotLight id="2"><Position>0 0 0</Position>
+    <Direction>0 0 1</Direction><Intensity>1 1 1</Intensity>)";
+  p.lights = spot + "<CoverageAngle>30</CoverageAngle><FalloffAngle>40</FalloffAngle></SpotLight>";
+  expect_look_at_error(p, "SpotLight id=2 > FalloffAngle: '40' must lie in [0, CoverageAngle]");
+  p.lights = spot + "<CoverageAngle>0</CoverageAngle><FalloffAngle>0</FalloffAngle></SpotLight>";
+  expect_look_at_error(p, "CoverageAngle: '0' must lie in (0, 360]");
+  p.lights = spot + "<CoverageAngle>30</CoverageAngle></SpotLight>";
+  expect_look_at_error(p, "FalloffAngle");
 }
 
 }  // namespace

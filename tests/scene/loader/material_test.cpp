@@ -1,12 +1,17 @@
 // Materials in the loader (src/scene/loader/materials.cpp): references to materials, ids with
-// white space, and the older dialect of the material elements.
+// white space, the older dialect of the material elements, <BRDFs> and the materials that
+// use them, and degamma.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
-#include "util/errors.h"
+#include "cl/material/brdf.h"
+
 #include "scene/scene.h"
 #include "support/loader_fixture.h"
+#include "support/look_at_scene.h"
+#include "util/errors.h"
 
 namespace rt {
 namespace {
@@ -50,6 +55,40 @@ TEST_F(LoaderAccepts, OlderMaterialDialect) {
                            replaced_all(mats, "<Transparency>0.5 0.5 0.5</Transparency>", "")}})));
   EXPECT_EQ(newer.materials.at(2).type, RT_MATERIAL_PLAIN);
   EXPECT_EQ(newer.materials.at(3).type, RT_MATERIAL_PLAIN);
+}
+
+TEST(LoaderHw56, Brdfs) {
+  LookAtParts p;
+  EXPECT_EQ(load_look_at(p).materials[0].brdf, RT_BRDF_ORIGINAL_BLINN_PHONG);
+  p.brdfs = R"(<BRDFs><ModifiedPhong id="1" normalized="true"><Exponent>50</Exponent>
+    </ModifiedPhong><TorranceSparrow id="2" kdfresnel="true"><Exponent>20</Exponent>
+    </TorranceSparrow></BRDFs>)";
+  p.material = R"(BRDF="1")";
+  Material m = load_look_at(p).materials[0];
+  EXPECT_EQ(m.brdf, RT_BRDF_MODIFIED_PHONG);
+  EXPECT_EQ(m.brdf_flags, RT_BRDF_NORMALIZED);
+  EXPECT_EQ(m.phong_exponent, 50.0f);  // The BRDF's exponent replaces PhongExponent.
+  p.material = R"(BRDF="2")";
+  m = load_look_at(p).materials[0];
+  EXPECT_EQ(m.brdf, RT_BRDF_TORRANCE_SPARROW);
+  EXPECT_EQ(m.brdf_flags, RT_BRDF_KD_FRESNEL);
+  EXPECT_EQ(m.phong_exponent, 20.0f);
+  p.material = R"(BRDF="3")";
+  expect_look_at_error(p, "BRDF='3' names no BRDF");
+  p.brdfs = R"(<BRDFs><Lafortune id="1"/></BRDFs>)";
+  p.material = "";
+  expect_look_at_error(p, "Lafortune id=1: unknown BRDF type");
+  p.brdfs = R"(<BRDFs><ModifiedPhong id="1" normalized="yes"/></BRDFs>)";
+  expect_look_at_error(p, "normalized='yes' must be true or false");
+}
+
+TEST(LoaderHw56, Degamma) {
+  LookAtParts p;
+  p.material = R"(degamma="true")";
+  Material m = load_look_at(p).materials[0];
+  EXPECT_EQ(m.ambient.x, 1.0f);
+  EXPECT_EQ(m.diffuse.x, std::pow(0.5f, 2.2f));
+  EXPECT_EQ(m.specular.y, std::pow(0.25f, 2.2f));
 }
 
 }  // namespace
