@@ -16,8 +16,8 @@ foreach(case multicam large fault)
     set(name mpi.${case}.${device})
     if(RT_MPI_FOUND)
       add_test(NAME ${name}
-               COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/distributed/mpi_render_test.sh $<TARGET_FILE:raytracer>
-                       ${MPIEXEC_EXECUTABLE} ${RT_SHARED_SCENES_DIR}
+               COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/distributed/mpi_render_test.sh
+                       $<TARGET_FILE:raytracer> ${MPIEXEC_EXECUTABLE} ${RT_SHARED_SCENES_DIR}
                        ${CMAKE_CURRENT_BINARY_DIR}/mpi_${case}_${device} ${device} ${case}
                        $<TARGET_FILE:raytracer_mpi_faults>)
     else()

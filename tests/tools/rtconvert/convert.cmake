@@ -27,8 +27,9 @@ foreach(line IN LISTS rt_course_lines)
   endif()
   list(APPEND rt_convert_done "${scene}:${camera}")
   add_test(NAME convert.${name}
-           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/rtconvert/convert_roundtrip.sh $<TARGET_FILE:raytracer>
-                   $<TARGET_FILE:rtconvert> $<TARGET_FILE:compare> ${RT_SHARED_SCENES_DIR}/${scene}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/tools/rtconvert/convert_roundtrip.sh
+                   $<TARGET_FILE:raytracer> $<TARGET_FILE:rtconvert> $<TARGET_FILE:compare>
+                   ${RT_SHARED_SCENES_DIR}/${scene}
                    ${CMAKE_CURRENT_BINARY_DIR}/convert/${name} ${fields})
   set_tests_properties(convert.${name} PROPERTIES LABELS convert SKIP_RETURN_CODE 77)
 endforeach()
