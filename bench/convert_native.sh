@@ -1,5 +1,5 @@
 #!/bin/bash
-# What a glTF viewer keeps of each course scene: every scene of tests/course_scenes.txt is
+# What a glTF viewer keeps of each course scene: every scene of tests/course/course_scenes.txt is
 # exported to .glb and imported back twice, with rtconvert's extras (the exact round trip
 # of the `convert` tests) and with --no-extras (glTF's native cameras, KHR lights and
 # metallic-roughness materials only, as another tool would read the file). Both are
@@ -10,13 +10,13 @@ set -uo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:-build}" && pwd)"
 shared="$here/../shared/scenes"
-source "$here/tests/scene_camera.sh"
+source "$here/tests/support/scene_camera.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 printf "| scene | with extras | --no-extras: MAE | PSNR (dB) |\n|---|---|---|---|\n"
 declare -A seen
-grep -v '^#' "$here/tests/course_scenes.txt" | while read -r name scene reference criterion flags; do
+grep -v '^#' "$here/tests/course/course_scenes.txt" | while read -r name scene reference criterion flags; do
   [ -f "$shared/$scene" ] || continue
   scene_camera "$shared/$scene" $flags
   [ -n "${seen[$scene:$camera]:-}" ] && continue

@@ -1,7 +1,7 @@
 #!/bin/bash
 # One pass over what a machine with an OpenCL GPU can tell that this one cannot, in under
 # 8 minutes there (docs/gpu.md): the OpenCL devices, the suite's CL-vs-CPU comparison
-# (tests/cl_vs_cpu.sh quick: `compare exact` and `paired` at equal seeds, `welch` at
+# (tests/course/cl_vs_cpu.sh quick: `compare exact` and `paired` at equal seeds, `welch` at
 # different ones) on a subset of the course scenes, camera rays per second on hw3 tap_0200,
 # and the render times of the hw3 course scenes and of one hw6 path-traced camera; then one
 # table, whose last column says which figures mean something only on a GPU.
@@ -71,14 +71,14 @@ render_cl() {  # SCENE OUTDIR [raytracer flags...]
        END {printf "%.3f %.0f %.3f\n", r, c, m}' "$out/log"
 }
 
-# The course scene line NAME of tests/course_scenes.txt: "SCENE flags...".
-course_line() { awk -v n="$1" '$1 == n {$1 = ""; $3 = ""; $4 = ""; print}' "$here/tests/course_scenes.txt"; }
+# The course scene line NAME of tests/course/course_scenes.txt: "SCENE flags...".
+course_line() { awk -v n="$1" '$1 == n {$1 = ""; $3 = ""; $4 = ""; print}' "$here/tests/course/course_scenes.txt"; }
 
-echo "== CL vs CPU reference (tests/cl_vs_cpu.sh quick)"
+echo "== CL vs CPU reference (tests/course/cl_vs_cpu.sh quick)"
 for name in hw1.bunny hw1.cornellbox_recursive hw3.metal_glass_plates hw4.wood_box_all; do
   read -r scene flags <<< "$(course_line "$name")"
   # shellcheck disable=SC2086
-  "$here/tests/cl_vs_cpu.sh" "$rt" "$cmp" "$scenes/$scene" "$work/cvc_$name" quick $flags \
+  "$here/tests/course/cl_vs_cpu.sh" "$rt" "$cmp" "$scenes/$scene" "$work/cvc_$name" quick $flags \
     "${device[@]}" "${small[@]}" > "$work/cvc_$name.log" 2>&1
   rc=$?
   case $rc in
@@ -116,7 +116,7 @@ else
 fi
 
 echo "== render times (CL device)"
-hw3=$(awk '$1 ~ /^hw3\./ {print $1}' "$here/tests/course_scenes.txt")
+hw3=$(awk '$1 ~ /^hw3\./ {print $1}' "$here/tests/course/course_scenes.txt")
 for name in $hw3 hw6.path_glass; do
   if [ "$name" = hw6.path_glass ]; then
     scene="hw6/pathTracing/cornellbox_jaroslav_path_glass.xml" flags="--camera 0"

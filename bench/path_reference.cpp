@@ -8,7 +8,7 @@
 // the subset's statistics with --budget) against the reference's PNG, next to noise floors:
 //   floorP  the same figure between the reference and its partner, the reference of the
 //           same scene and renderer whose expected PNG agrees: Russian roulette toggled with
-//           next-event estimation, importance sampling toggled without it (the issue's
+//           next-event estimation, importance sampling toggled without it (the
 //           pairs: diffuse/diffuse_importance, diffuse_next/diffuse_next_russian...);
 //   floorH  the reference against a second render of its own kind, by the three-cornered
 //           hat with the render and the importance-toggled reference as the other corners
@@ -31,12 +31,12 @@
 #include <vector>
 
 #include "block_subset.h"
-#include "prepare/flat_scene.h"
+#include "compare/image_metrics.h"
 #include "image/read_hdr.h"
 #include "image/tonemap.h"
-#include "compare/image_metrics.h"
-#include "io/png_io.h"
 #include "integrator/render.h"
+#include "io/png_io.h"
+#include "prepare/flat_scene.h"
 
 namespace {
 
@@ -71,7 +71,7 @@ std::string hat_partner(const std::string& name) {
   return toggled(name, "_importance", at);
 }
 
-// The partner of a reference (its floor figures): Russian roulette toggled with
+// The partner of a reference, for its floor figures: Russian roulette toggled with
 // next-event estimation, importance sampling toggled without it (without next-event
 // estimation Russian roulette changes the noise, hence the tone mapping, too much:
 // diffuse vs diffuse_russian differ by 31.6).
@@ -97,7 +97,8 @@ double zero_percent(const rt::ImageF& img) {
 //  * noise kind: the share of pixels without any light differs by at most 4.5 binomial
 //    standard errors (sqrt(2 p (1 - p) / n)); it sets the PNG's tone mapping;
 //  * the block MAE (reference's tone mapping) is at most 1.15 times the three-cornered-hat
-//    floor (the target), or 1.15 times the pair floor when the hat is undefined.
+//    floor (a correct render sits about as far from the reference as a second render of
+//    its kind would), or 1.15 times the pair floor when the hat is undefined.
 bool check_render(const rt::ImageF& mine, const rt::ImageF& ref, double mae, double floor) {
   double z = rt::bench::block_bias_z(mine, ref);
   double p = zero_percent(ref) / 100, dz = (zero_percent(mine) - zero_percent(ref)) / 100;

@@ -85,7 +85,7 @@ int run_welch(int argc, char** argv) {
   if (report_identical(ma, mb)) return 0;
   // At unequal sample counts the renders' means are skewed unequally, and a heavy-tailed
   // estimator (a path tracer: most samples 0, a few carry the light) then gives plain
-  // per-pixel Welch false alarms (tests/path_compare_test.cpp: 16 against 256 spp of the
+  // per-pixel Welch false alarms (tests/compare/path_compare_test.cpp: 16 against 256 spp of the
   // course's Cornell box, p = 8e-8); the larger of the two variances keeps the level.
   if (!o.welch.pooled && !o.unpooled && ma.info.spp != mb.info.spp) {
     o.welch.pooled = true;

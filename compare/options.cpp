@@ -114,7 +114,7 @@ Table make_diff() {
 
 // The list of course scenes `compare reference` looks a criterion up in.
 #ifndef RT_COURSE_SCENES
-#define RT_COURSE_SCENES "tests/course_scenes.txt"
+#define RT_COURSE_SCENES "tests/course/course_scenes.txt"
 #endif
 
 Table make_report() {
@@ -140,7 +140,7 @@ Table make_reference() {
           d);
   t.section("reference")
       .text("--criterion", "SPEC", RT_FIELD(criterion),
-            "KIND[:LIMIT][,double:P] as in tests/course_scenes.txt, KIND hw12, hw3 or block: " +
+            "KIND[:LIMIT][,double:P] as in tests/course/course_scenes.txt, KIND hw12, hw3 or block: " +
                 criterion_help())
       .default_is("the line of --scenes-list whose REFERENCE ends REFERENCE.png")
       .text("--scenes-list", "FILE", RT_FIELD(scenes_list),
@@ -235,9 +235,9 @@ const char* kReport =
 
 const char* kReference =
     R"(reference RENDER.png REFERENCE.png   Checks an existing render against the course's
-   official image by the criterion the reference tests use (tests/reference_check.cpp
+   official image by the criterion the reference tests use (tests/course/reference_check.cpp
    renders and applies the same code), without rendering again. The criterion is
-   looked up in tests/course_scenes.txt by REFERENCE's path unless --criterion
+   looked up in tests/course/course_scenes.txt by REFERENCE's path unless --criterion
    gives it. Exit status 0 PASS, 1 FAIL, 2 bad input.
 )";
 

@@ -1,5 +1,5 @@
 // The criterion an image must meet against the course's official image: the one check the
-// reference-image tests (tests/reference_check.cpp, which renders the scene) and
+// reference-image tests (tests/course/reference_check.cpp, which renders the scene) and
 // `compare reference` (which reads an existing render) both apply.
 //
 // The 8-bit conversion truncates as the course's renderer does, so the deterministic
@@ -51,12 +51,12 @@ std::string criterion_help();
 ReferenceResult check_reference(const rt::Image8& render, const rt::Image8& reference,
                                 const ReferenceCriterion& c, bool double_precision);
 
-// Reads a CRITERION field of tests/course_scenes.txt: KIND[:LIMIT][,double:P], where LIMIT
+// Reads a CRITERION field of tests/course/course_scenes.txt: KIND[:LIMIT][,double:P], where LIMIT
 // is min_identical (hw12), max_bias (hw3) or max_block_mae (block). Returns false and sets
 // *error on a malformed field.
 bool parse_criterion(const std::string& field, ReferenceCriterion* c, std::string* error);
 
-// Looks `reference` up in a list of course scenes (tests/course_scenes.txt: NAME SCENE
+// Looks `reference` up in a list of course scenes (tests/course/course_scenes.txt: NAME SCENE
 // REFERENCE CRITERION [flags]; REFERENCE relative to the scenes directory): the line whose
 // REFERENCE ends the given path. Sets *name and *field (the CRITERION) and returns true;
 // false when no line matches. Throws std::runtime_error when the list cannot be read.

@@ -1,5 +1,5 @@
 // The fuzzed entry points, shared by the libFuzzer executables (fuzz/fuzzer.cpp) and the
-// unit tests that replay every input kept in fuzz/regressions/ (tests/fuzz_regression_test.cpp,
+// unit tests that replay every input kept in fuzz/regressions/ (tests/fuzz/regression_test.cpp,
 // tests/fuzz/fuzz_replay_test.cpp).
 // Each returns normally for any input the program handles as it should (loaded, or refused
 // with one rt::InputError line); anything else escapes as an exception or a sanitizer report.

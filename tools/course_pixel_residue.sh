@@ -4,7 +4,7 @@
 # renderer (tools/explain_ensemble.py, full size, --device cpu) and the explanation of
 # every pixel where our image differs from the course's (tools/explain_pixels.py).
 #
-# usage: tools/course_pixel_residue.sh [NAME ...]     NAME: a line of tests/course_scenes.txt
+# usage: tools/course_pixel_residue.sh [NAME ...]     NAME: a line of tests/course/course_scenes.txt
 #   RT_BUILD (default build), RT_WORK (default /tmp/course_pixel_residue) and RT_CSV_DIR
 #   (default docs/course_pixel_residue) may be set. About 1 CPU-minute per hw1 image and 10
 #   per hw2 grass_desert.
@@ -17,8 +17,8 @@ scenes="$here/../shared/scenes"
 [ $# -gt 0 ] || set -- hw1.spheres hw1.spheres_mirror
 mkdir -p "$csv_dir"
 for name in "$@"; do
-  line="$(awk -v n="$name" '$1 == n' "$here/tests/course_scenes.txt")"
-  [ -n "$line" ] || { echo "$name: not a line of tests/course_scenes.txt" >&2; exit 2; }
+  line="$(awk -v n="$name" '$1 == n' "$here/tests/course/course_scenes.txt")"
+  [ -n "$line" ] || { echo "$name: not a line of tests/course/course_scenes.txt" >&2; exit 2; }
   read -r _ scene reference _ flags <<< "$line"
   echo "## $name"
   echo

@@ -2,7 +2,7 @@
 # Runs one libFuzzer target of the sanitized tree (tools/sanitize_build.sh) from its seed corpus:
 # fuzz/seeds/TARGET, fuzz/regressions/TARGET (and the dictionary fuzz/TARGET.dict), and for
 # scene, ply, png and jpeg every course file of that kind under ../shared/scenes of at most
-# 64 KiB (the command line's seeds add each course scene's flags from tests/course_scenes.txt).
+# 64 KiB (the command line's seeds add each course scene's flags from tests/course/course_scenes.txt).
 # A crash leaves its input in BUILD_DIR/fuzz-artifacts/TARGET/; after the fix, copy it into
 # fuzz/regressions/TARGET/, where the unit tests replay it.
 #
@@ -44,7 +44,7 @@ case $target in
     fi ;;
   cli)
     i=0
-    grep -v '^#' "$src/tests/course_scenes.txt" | while read -r _ scene _ _ flags; do
+    grep -v '^#' "$src/tests/course/course_scenes.txt" | while read -r _ scene _ _ flags; do
       i=$((i + 1))
       # shellcheck disable=SC2086  # the flags are split on purpose
       printf '%s\0' "$scene" $flags > "$seeds/course_$i"

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Refactor check: renders every course scene of tests/course_scenes.txt, the example
+# Refactor check: renders every course scene of tests/course/course_scenes.txt, the example
 # scene and tap_0200 on both devices (seed 0) and prints a SHA-256 of every PNG and
 # moments file, so two builds can be compared byte for byte:
 #   tools/pixel_hashes.sh BUILD_A quick > a.txt; tools/pixel_hashes.sh BUILD_B quick > b.txt
@@ -60,7 +60,7 @@ while read -r name scene _ _ flags; do
   if [ ! -f "$shared/$scene" ]; then echo "missing $name"; continue; fi
   # shellcheck disable=SC2086
   render "$name" "$shared/$scene" $flags
-done < "$here/tests/course_scenes.txt"
+done < "$here/tests/course/course_scenes.txt"
 render example "$here/scenes/example.xml"
 [ -f "$shared/hw3/tap_water/xml/tap_0200.xml" ] && render tap_0200 "$shared/hw3/tap_water/xml/tap_0200.xml"
 exit 0

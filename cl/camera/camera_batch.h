@@ -4,7 +4,7 @@
 // eight lanes wide (PoCL keeps them scalar; the batch still overlaps the samples' chains). Each
 // value is the one the one-at-a-time path (GeneratePixelSample, cl/camera/camera.h) makes, to the bit: the
 // loops call that path's per-axis steps (CourseFilmAxis, LensOffsetAxis, StratumRow) in its order
-// (tests/camera_batch_test.cpp).
+// (tests/camera/camera_batch_test.cpp).
 #ifndef RT_CAMERA_BATCH_H
 #define RT_CAMERA_BATCH_H
 

@@ -74,7 +74,7 @@ RT_DEVICE uint PermutationRotate(uint i, uint n, uint key, uint key_mod) {
 
 // Two rounds are taken before the first test: the walk's exit was a mispredicted branch
 // about every other element, and the second round is needed often (n = 9: 7 times in 16).
-// Same values as the plain walk (tests/permutation_test.cpp). Always inlined in the kernel
+// Same values as the plain walk (tests/util/permutation_test.cpp). Always inlined in the kernel
 // (PoCL kept it out of line: a call per stratified glossy sample and camera stratum).
 RT_KERNEL_INLINE uint PermutationElement(uint i, uint n, uint key) {
   uint w = PermutationMask(n);

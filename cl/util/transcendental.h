@@ -7,7 +7,7 @@
 // Each function is an exact argument reduction and reconstruction, written once, around a
 // polynomial in the reduced argument, which is the one part that depends on the precision:
 // in float the Cephes single-precision polynomials (about one float ulp), in double Taylor
-// or atanh series long enough for double (a few double ulps). tests/transcendental_test.cpp
+// or atanh series long enough for double (a few double ulps). tests/util/transcendental_test.cpp
 // and transcendental_double_test.cpp state and check the bounds.
 //
 // ExpR, PowR, SinR and CosR (the end of this file) are what tools/to_real.py writes for

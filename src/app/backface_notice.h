@@ -16,7 +16,7 @@ namespace rt {
 // The share of pixels from which the notice is given. Closed scenes seen from outside
 // show back faces only where a smooth mesh's shading normal tilts away at a silhouette or
 // through thin open surfaces seen from behind. Measured on the 74 loadable scenes of
-// tests/course_scenes.txt without culling (quarter resolution, 1 spp): 0 % for most,
+// tests/course/course_scenes.txt without culling (quarter resolution, 1 spp): 0 % for most,
 // at most 1.1 % in hw1 (windmill_smooth), 6.5 % for hw2 grass_desert (grass blades from
 // behind, which the course rendered without culling); the camera behind a wall of
 // cornellbox_boxes_dynamic (hw3, spring2021) sees back faces over 100 %. 20 % keeps three

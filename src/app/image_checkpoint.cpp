@@ -33,7 +33,7 @@ ImageCheckpoint::ImageCheckpoint(const CliOptions& opt, const JobScene& scene, i
 
 // Everything that changes the film's bytes, each field a line of the checkpoint's header.
 // The device's name is part of it: the OpenCL and CPU films of a scene agree bit for bit
-// (tests/cl_vs_cpu.sh), but that is checked per scene, not promised for every device.
+// (tests/course/cl_vs_cpu.sh), but that is checked per scene, not promised for every device.
 const CheckpointKey& ImageCheckpoint::key() {
   if (!key_.empty()) return key_;
   const CameraDesc& cam = scene_.desc.cameras[camera_];

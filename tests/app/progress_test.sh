@@ -15,7 +15,7 @@
 # notice:      cornellbox_boxes_dynamic (camera outside the box's front wall) prints the
 #              one --cull-back-faces notice (100 % of camera rays hit a back face); not
 #              with --cull-back-faces or --quiet, nor for hw1/cornellbox, which doesn't
-#              need it. Of the 75 course scenes of tests/course_scenes.txt rendered
+#              need it. Of the 75 course scenes of tests/course/course_scenes.txt rendered
 #              without culling (74 load; trex_smooth lacks a PLY file) only hw3's and
 #              spring2021's cornellbox_boxes_dynamic print it, both rendered by the course
 #              with --cull-back-faces (the shares: src/app/backface_notice.h).

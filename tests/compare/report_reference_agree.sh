@@ -1,6 +1,6 @@
 #!/bin/bash
 # `compare reference` on fresh renders of course scenes, at the suite's settings (full
-# resolution, the scene's own sample count, the flags of tests/course_scenes.txt):
+# resolution, the scene's own sample count, the flags of tests/course/course_scenes.txt):
 #   report_reference_agree.sh RAYTRACER COMPARE SOURCE_DIR SCENES_DIR WORK_DIR NAME...
 # Each NAME's render must pass, as the reference tests require of it (their verdict on the
 # same scenes: ctest -L reference_full, configured with -DRT_FULL_REFERENCE=ON). Prints one
@@ -9,7 +9,7 @@
 set -u
 raytracer=$1 compare=$2 source=$3 scenes=$4 work=$5
 shift 5
-list=$source/tests/course_scenes.txt
+list=$source/tests/course/course_scenes.txt
 status=0 checked=0
 for name in "$@"; do
   line=$(grep -E "^$name[[:space:]]" "$list") || { echo "$name: not in $list"; exit 1; }

@@ -1,4 +1,4 @@
-// The reference criterion shared by tests/reference_check.cpp and `compare reference`
+// The reference criterion shared by tests/course/reference_check.cpp and `compare reference`
 // (its thresholds at their edges, the course_scenes.txt syntax and look-up), and
 // `compare summary` on files with known contents.
 #include <gtest/gtest.h>

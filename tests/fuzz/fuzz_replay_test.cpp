@@ -1,6 +1,6 @@
 // Replays the inputs kept in fuzz/regressions/<target>/ for the image readers' and
 // rtconvert's fuzz targets (the scene, PLY and command-line ones are replayed by
-// tests/fuzz_regression_test.cpp). Every input once crashed, hung, leaked or tripped a
+// tests/fuzz/regression_test.cpp). Every input once crashed, hung, leaked or tripped a
 // sanitizer, or is a hostile case kept on purpose; each must now be read or refused with one
 // line naming the file. A target with no folder yet is a failure: an empty replay proves
 // nothing.

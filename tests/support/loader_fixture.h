@@ -1,4 +1,4 @@
-// The fixture of the scene loader's tests (tests/loader/): each test edits the shared tiny
+// The fixture of the scene loader's tests (tests/scene/loader/): each test edits the shared tiny
 // scene, writes it to its own directory and loads it, or expects the one-line error.
 #pragma once
 

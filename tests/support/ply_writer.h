@@ -1,6 +1,6 @@
-// Writing PLY test files (tests/ply_test.cpp, tests/ply_errors_test.cpp): one description
-// of a body in any of the three encodings, a rich mesh that exercises skipped data, and the
-// check of a rejected file.
+// Writing PLY test files (tests/scene/ply_test.cpp, tests/scene/ply_errors_test.cpp): one
+// description of a body in any of the three encodings, a rich mesh that exercises skipped
+// data, and the check of a rejected file.
 #pragma once
 
 #include <algorithm>

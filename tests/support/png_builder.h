@@ -1,4 +1,4 @@
-// Helpers of the PNG tests (tests/png_write_test.cpp, tests/png_read_test.cpp): a fixture
+// Helpers of the PNG tests (tests/io/png_write_test.cpp, tests/io/png_read_test.cpp): a fixture
 // with a temporary directory, byte-level file access, chunk-level PNG construction for inputs
 // libpng itself would refuse to write, and libpng-written inputs of every color type.
 #pragma once
