@@ -107,7 +107,7 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
     progress.finish();
     const std::string out = rt::image_path(opt, s, c);
     const std::string saved = checkpoint.finish(r, rt::stop_requested().load());
-    rt::print_wrote(opt.quiet, out, r.spp, r.seconds);
+    rt::print_wrote(live, out, r.spp, r.seconds);
     if (!opt.quiet && !opt.render.cull_back_faces && !job.back_face_notice_given) {
       const std::string text = rt::back_face_notice(rt::back_face_share(fc, r.primary));
       job.back_face_notice_given = !text.empty();

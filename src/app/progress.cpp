@@ -168,8 +168,8 @@ void enable_status_reports(bool enabled) { status_reports = enabled; }
 
 void report_status(const std::string& text) { show_status(status_reports.load(), text); }
 
-void print_wrote(bool quiet, const std::string& file, int spp, double seconds) {
-  if (quiet) return;
+void print_wrote(bool shown, const std::string& file, int spp, double seconds) {
+  if (!shown) return;
   std::fprintf(stderr, "wrote %s (%d spp, %.2f s)\n", file.c_str(), spp, seconds);
 }
 

@@ -55,8 +55,9 @@ class Progress {
 void show_status(bool enabled, const std::string& text);
 // Erases the live line or status, so that a line printed next starts clean.
 void clear_status(bool enabled);
-// The record of a finished image: "wrote FILE (S spp, T s)"; nothing when quiet.
-void print_wrote(bool quiet, const std::string& file, int spp, double seconds);
+// The record of a finished image: "wrote FILE (S spp, T s)", beside the progress it ends:
+// only when `shown` (a terminal, not --quiet), like the live line.
+void print_wrote(bool shown, const std::string& file, int spp, double seconds);
 // Status from steps deep inside a device (the OpenCL kernel compile): shown through
 // show_status once a driver has enabled it (off by default: tests, tools, --quiet).
 void enable_status_reports(bool enabled);

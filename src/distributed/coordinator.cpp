@@ -94,10 +94,9 @@ void JobCoordinator::complete(int rank, int32_t index, int spp, double busy_s,
   write_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ++images_written_;
   progress_.clear();
-  print_wrote(opt_.quiet, im.path, f.r.spp, f.busy_s);
+  print_wrote(Progress::wanted_mpi(opt_.quiet), im.path, f.r.spp, f.busy_s);
   progress_.task_done(pixels, true);
-  f.r = RenderResult();  // The image is on disk; its film is no longer needed.  // The image is on
-                         // disk; its film is no longer needed.
+  f.r = RenderResult();  // The image is on disk; its film is no longer needed.
 }
 
 void JobCoordinator::fail(int rank, const std::string& why) {
