@@ -32,6 +32,8 @@ InputError hdr_error(const std::string& path, const std::string& why) {
 // The largest image either reader accepts (2^28 pixels): a corrupt header must not make
 // us allocate tens of gigabytes.
 constexpr long long kMaxPixels = 1LL << 28;
+// The widest EXR accepted (environment maps are at most 16K wide).
+constexpr long long kMaxExrWidth = 1LL << 16;
 
 // OpenEXR 3.1 allocates and clears each header attribute at the size the file claims
 // before reading it: a 426-byte file claiming a 200 MB attribute took 25 s under ASan. The
@@ -54,6 +56,18 @@ void check_exr_attribute_sizes(const std::string& path) {
     if (size > d.size() - p)
       throw exr_error(path, "header attribute '" + name + "' claims " + std::to_string(size) +
                                 " bytes, the file has " + std::to_string(d.size() - p) + " left");
+    // OpenEXR sizes its line buffers from the data window before reading a pixel: a wide
+    // window in a small file would take gigabytes there, so it is checked here first.
+    if (name == "dataWindow" && type == "box2i" && size == 16) {
+      auto at = [&](size_t k) {
+        return static_cast<int32_t>(d[p + k] | d[p + k + 1] << 8 | d[p + k + 2] << 16 |
+                                    uint32_t{d[p + k + 3]} << 24);
+      };
+      const long long w = static_cast<long long>(at(8)) - at(0) + 1;
+      const long long h = static_cast<long long>(at(12)) - at(4) + 1;
+      if (w <= 0 || h <= 0 || w > kMaxExrWidth || w * h > kMaxPixels)
+        throw exr_error(path, "data window of " + std::to_string(w) + "x" + std::to_string(h));
+    }
     p += size;
   }
 }

@@ -150,11 +150,15 @@ TEST(ReadRadianceHdr, BadFiles) {
       {"xyze.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 1\n", {1, 1, 1, 128}, "xyze"},
       {"flip.hdr", "#?RADIANCE\n\n+Y 1 +X 1\n", {1, 1, 1, 128}, "resolution"},
       {"huge.hdr", "#?RADIANCE\n\n-Y 100000 +X 100000\n", {}, "image size"},
-      {"short.hdr", "#?RADIANCE\n\n-Y 2 +X 2\n", {1, 1, 1, 128}, "scanline 0"},
-      // An RLE run that overflows the scanline.
-      {"overrun.hdr", "#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 128 + 9, 1}, "scanline 0"},
+      // Fewer bytes than the smallest encoding of the claimed pixels: refused before decoding.
+      {"short.hdr", "#?RADIANCE\n\n-Y 2 +X 2\n", {1, 1, 1, 128}, "too short for 2x2 pixels"},
+      // An RLE run that overflows the scanline (padded past the size check, so the decoder
+      // meets the run).
+      {"overrun.hdr", "#?RADIANCE\n\n-Y 1 +X 8\n",
+       {2, 2, 0, 8, 128 + 9, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "scanline 0"},
       // A zero-length run would loop forever in a careless decoder.
-      {"zero.hdr", "#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 128, 1}, "scanline 0"},
+      {"zero.hdr", "#?RADIANCE\n\n-Y 1 +X 8\n",
+       {2, 2, 0, 8, 128, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "scanline 0"},
   };
   for (const Case& c : cases) {
     std::string path = TempPath(c.name);
