@@ -8,6 +8,7 @@
 #include <assimp/Importer.hpp>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -17,6 +18,7 @@
 #include "course_extras.h"
 #include "gltf_export.h"
 #include "import_lights.h"
+#include "import_mesh.h"
 #include "material_map.h"
 #include "texture_import.h"
 
@@ -25,70 +27,6 @@ namespace {
 
 using rt::Mat4;
 using rt::Vec3d;
-
-Mat4 from_ai(const aiMatrix4x4& a) {
-  Mat4 m;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) m(r, c) = a[r][c];
-  return m;
-}
-
-// True when some vertex normal leans away from its face: the file means smooth shading.
-bool has_smooth_normals(const aiMesh& m) {
-  if (!m.HasNormals()) return false;
-  for (unsigned f = 0; f < m.mNumFaces; ++f) {
-    const aiFace& face = m.mFaces[f];
-    aiVector3D a = m.mVertices[face.mIndices[0]], b = m.mVertices[face.mIndices[1]],
-               c = m.mVertices[face.mIndices[2]];
-    aiVector3D n = (b - a) ^ (c - a);
-    if (n.Length() == 0) continue;
-    n.Normalize();
-    for (int k = 0; k < 3; ++k) {
-      aiVector3D v = m.mNormals[face.mIndices[k]];
-      if (v.Length() > 0 && (v.Normalize() * n) < 0.999f) return true;
-    }
-  }
-  return false;
-}
-
-// `uvs`: the mesh's first texture coordinates are kept, with v flipped (Assimp's origin is
-// the bottom left, the course's the top left). `weld`: vertices that differ only in the
-// attributes dropped here (texture seams of an untextured mesh) are merged again, so that
-// smooth shading does not split along them.
-rt::MeshDesc mesh_of(const aiMesh& m, bool uvs, bool weld) {
-  rt::MeshDesc d;
-  d.element = std::string("mesh '") + m.mName.C_Str() + "'";
-  std::vector<int> index(m.mNumVertices);
-  std::map<std::array<float, 6>, int> seen;
-  for (unsigned i = 0; i < m.mNumVertices; ++i) {
-    const aiVector3D p = m.mVertices[i], n = m.HasNormals() ? m.mNormals[i] : aiVector3D();
-    if (weld) {
-      auto [it, added] = seen.emplace(std::array<float, 6>{p.x, p.y, p.z, n.x, n.y, n.z},
-                                      static_cast<int>(d.positions.size()));
-      index[i] = it->second;
-      if (!added) continue;
-    } else {
-      index[i] = static_cast<int>(d.positions.size());
-    }
-    d.positions.push_back({p.x, p.y, p.z});
-    if (uvs) d.uvs.push_back({m.mTextureCoords[0][i].x, 1.0 - m.mTextureCoords[0][i].y});
-  }
-  for (unsigned f = 0; f < m.mNumFaces; ++f)
-    if (m.mFaces[f].mNumIndices == 3)
-      d.triangles.push_back({index[m.mFaces[f].mIndices[0]], index[m.mFaces[f].mIndices[1]],
-                             index[m.mFaces[f].mIndices[2]]});
-  return d;
-}
-
-bool same_geometry(const rt::MeshDesc& a, const rt::MeshDesc& b) {
-  if (a.triangles != b.triangles || a.positions.size() != b.positions.size() || a.uvs != b.uvs)
-    return false;
-  for (size_t i = 0; i < a.positions.size(); ++i)
-    if (a.positions[i].x != b.positions[i].x || a.positions[i].y != b.positions[i].y ||
-        a.positions[i].z != b.positions[i].z)
-      return false;
-  return true;
-}
 
 std::string file_safe(std::string s) {
   for (char& c : s)
@@ -337,11 +275,13 @@ ImportedScene Importer::run(int default_width, bool use_extras) {
       if (m.contains("extras") && m["extras"].contains(kExtrasKey)) {
         std::string n = m.value("name", "");
         if (n.rfind("material", 0) != 0) continue;
-        const std::string digits = n.substr(8);
+        // material<i>, or material<i>_textured<k>: a textured object's copy of material i.
+        size_t end = 8;
+        while (end < n.size() && std::isdigit(static_cast<unsigned char>(n[end]))) ++end;
+        const std::string digits = n.substr(8, end - 8);
+        const bool copy_of = end == n.size() || n.compare(end, 9, "_textured") == 0;
         size_t index = kMaxMaterials;
-        if (!digits.empty() && digits.size() <= 5 &&
-            digits.find_first_not_of("0123456789") == std::string::npos)
-          index = std::stoul(digits);
+        if (!digits.empty() && digits.size() <= 5 && copy_of) index = std::stoul(digits);
         if (index >= kMaxMaterials)
           throw ConvertError(file_ + ": glTF material '" + n +
                              "' has course extras but is not named material0 to material" +
