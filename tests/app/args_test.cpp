@@ -103,7 +103,7 @@ TEST(RaytracerOptions, UsageErrorsNameTheOptionAndTheValue) {
   EXPECT_EQ(parse({"--seed", "4294967296"}, &o),
             "--seed: '4294967296' is not a whole number in [0, 4294967295]");
   EXPECT_EQ(parse({"--filter-sigma", "nan"}, &o),
-            "--filter-sigma: 'nan' is not a number in (0, 100)");
+            "--filter-sigma: 'nan' is not a number in [0.054, 100)");
 }
 
 TEST(RaytracerOptions, HelpListsEveryOptionDefaultAndVariable) {

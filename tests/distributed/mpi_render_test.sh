@@ -17,18 +17,8 @@
 set -uo pipefail
 rt="$1" mpiexec="$2" scenes="$3" work="$4" device="$5" case="$6" faulty="${7:-}"
 exe="$rt"  # the executable run() starts; the fault case swaps in $faulty
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-# Loopback only: no network interfaces are probed, so containers need no setup.
-export OMPI_MCA_btl=self,vader
-
-fail() {
-  echo "FAIL: $*"
-  exit 1
-}
-if [ "$device" = cl ] && ! "$rt" --list-devices > /dev/null 2>&1; then
-  echo "SKIP: no OpenCL device"
-  exit 77
-fi
+# shellcheck source=../support/mpi_setup.sh
+source "$(dirname "$0")/../support/mpi_setup.sh"
 rm -rf "$work" && mkdir -p "$work" || fail "cannot create $work"
 
 # run DIR NP [flags...]: renders into DIR (created) with NP ranks, 0 meaning no mpirun;

@@ -7,15 +7,8 @@
 # Exit status: 0 pass, 1 fail, 77 skipped (no OpenCL device).
 set -uo pipefail
 rt="$1" mpiexec="$2" scene="$3" work="$4" device="$5"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
-fail() {
-  echo "FAIL: $*"
-  exit 1
-}
-if [ "$device" = cl ] && ! "$rt" --list-devices > /dev/null 2>&1; then
-  echo "SKIP: no OpenCL device"
-  exit 77
-fi
+# shellcheck source=../support/mpi_setup.sh
+source "$(dirname "$0")/../support/mpi_setup.sh"
 rm -rf "$work" && mkdir -p "$work/ref" || fail "cannot create $work"
 # 128x64 pixels: two tiles of 32 rows.
 flags=(--device "$device" --quiet --resolution-scale 8 --seed 5 --moments --threads 1 --spp 1500)
