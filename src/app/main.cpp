@@ -15,6 +15,7 @@
 #include "integrator/render_scheduler.h"
 #include "interrupt.h"
 #include "job_count.h"
+#include "output_plan.h"
 #include "progress.h"
 #include "render_job.h"
 #ifdef RT_WITH_MPI
@@ -135,6 +136,9 @@ int run(const rt::CliOptions& opt) {
   std::unique_ptr<rt::RenderDevice> device;
   const bool live = rt::Progress::wanted(opt.quiet);
   rt::enable_status_reports(live);  // The OpenCL kernel compile says so (cl_program.cpp).
+  // Every scene file read (lightly) and every output checked before the first renders.
+  rt::show_status(live, "checking the scene files and their outputs...");
+  rt::check_job_outputs(opt);
   JobCount job;
   std::vector<int> counted(opt.scenes.size());
   for (size_t i = 0; i < opt.scenes.size(); ++i) {

@@ -1,21 +1,17 @@
-// Checks, before anything is rendered, that every image the run will write can be written
-// and harms nothing: so a long render never ends in a refused or clobbering write.
+// The checks of one output file, made for every file of the job's output plan
+// (output_plan.h) before anything is rendered: so a long render never ends in a refused
+// write.
 #pragma once
 
 #include <string>
 
-#include "scene/scene.h"
-
 namespace rt {
 
-// Throws rt::InputError (or std::runtime_error for the folder itself), one line, when
-// - the output folder is missing, not a folder, or not writable;
-// - two rendered cameras (camera < 0: all of them) would write the same file;
-// - an output would replace one of the scene's inputs (the scene file, a PLY), or is a folder;
-// - a file name exceeds the file system's NAME_MAX or the path its PATH_MAX.
-// - an image's folder (ImageName "renders/a.png") does not exist below the output folder.
-// Every file a camera writes is checked: its image, the tone-mapped .png beside an .exr of
-// a camera with <Tonemap>, and with `moments` each image's <name>.moments.exr.
-void check_outputs(const SceneDesc& scene, int camera, const std::string& output_dir, bool moments);
+// Why `path`, a file written below the output folder `output_dir`, cannot be written; ""
+// when it can. Refused: a file name over the file system's NAME_MAX or a path over its
+// PATH_MAX; a folder (ImageName "renders/a.png") that does not exist below the output folder
+// or is not a folder; a path that is a directory. Existing files are not refused:
+// --skip-existing and --resume meet them, and a new render replaces them.
+std::string output_file_problem(const std::string& output_dir, const std::string& path);
 
 }  // namespace rt

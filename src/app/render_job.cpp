@@ -15,7 +15,6 @@
 #include "io/moments.h"
 #include "io/partial_mark.h"
 #include "io/png_io.h"
-#include "output_check.h"
 #include "util/errors.h"
 
 namespace rt {
@@ -29,11 +28,7 @@ JobScene load_job_scene(const std::string& path, const CliOptions& opt, bool pri
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (print_warnings && !opt.quiet)
     for (const auto& w : s.desc.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  if (opt.camera >= static_cast<int>(s.desc.cameras.size()))
-    throw input_error(path, "Cameras",
-                      "no camera " + std::to_string(opt.camera) + " (the file has " +
-                          std::to_string(s.desc.cameras.size()) + ")");
-  check_outputs(s.desc, opt.camera, opt.output_dir, opt.moments);
+  check_camera_choice(opt, s);
   if (opt.resolution_scale != 1.0)
     for (CameraDesc& cam : s.desc.cameras) {
       // The near plane is untouched, so the view stays the same at a different pixel count.
@@ -43,13 +38,20 @@ JobScene load_job_scene(const std::string& path, const CliOptions& opt, bool pri
   return s;
 }
 
+void check_camera_choice(const CliOptions& opt, const JobScene& scene) {
+  if (opt.camera >= static_cast<int>(scene.desc.cameras.size()))
+    throw input_error(scene.path, "Cameras",
+                      "no camera " + std::to_string(opt.camera) + " (the file has " +
+                          std::to_string(scene.desc.cameras.size()) + ")");
+}
+
 void check_output_dir(const CliOptions& opt) {
   std::error_code ec;
   if (!std::filesystem::exists(opt.output_dir, ec))
     throw std::runtime_error(opt.output_dir + ": output directory does not exist");
   if (!std::filesystem::is_directory(opt.output_dir, ec))
     throw std::runtime_error(opt.output_dir + ": output path is not a directory");
-  if (access(opt.output_dir.c_str(), W_OK) != 0)
+  if (access(opt.output_dir.c_str(), W_OK | X_OK) != 0)
     throw std::runtime_error(opt.output_dir + ": output directory is not writable");
 }
 
@@ -57,11 +59,13 @@ std::string image_path(const CliOptions& opt, const JobScene& scene, int camera)
   return (std::filesystem::path(opt.output_dir) / scene.desc.cameras[camera].image_name).string();
 }
 
-std::vector<std::string> camera_outputs(const CliOptions& opt, const CameraDesc& cam,
-                                        const std::string& image) {
-  std::vector<std::string> files{image};
-  if (cam.tonemap && is_exr_path(image)) files.push_back(tonemap_path_for(image));
-  if (opt.moments) files.push_back(moments_path_for(image));
+std::vector<CameraOutput> camera_outputs(const CliOptions& opt, const CameraDesc& cam,
+                                         const std::string& image) {
+  std::vector<CameraOutput> files{{image, "image"}};
+  if (cam.tonemap && is_exr_path(image))
+    files.push_back({tonemap_path_for(image), "tone-mapped image"});
+  if (opt.moments) files.push_back({moments_path_for(image), "moments file"});
+  files.push_back({checkpoint_path_for(image), "checkpoint", true});
   return files;
 }
 
@@ -73,11 +77,12 @@ std::vector<int> job_cameras(const CliOptions& opt, const JobScene& scene) {
       const std::string image = image_path(opt, scene, c);
       std::string why;  // The first partial output; empty when one is missing.
       bool complete = true;
-      for (const std::string& f : camera_outputs(opt, scene.desc.cameras[c], image)) {
-        const OutputStatus st = output_status(f);
+      for (const CameraOutput& f : camera_outputs(opt, scene.desc.cameras[c], image)) {
+        if (f.checkpoint) continue;
+        const OutputStatus st = output_status(f.path);
         if (st.state == OutputState::kComplete) continue;
         complete = false;
-        if (st.state == OutputState::kPartial) why = f + " is partial (" + st.mark + ")";
+        if (st.state == OutputState::kPartial) why = f.path + " is partial (" + st.mark + ")";
         break;
       }
       if (complete) continue;

@@ -23,16 +23,29 @@ struct JobScene {
 // Throws input_error / runtime_error (one line) on a bad file or a missing --camera.
 JobScene load_job_scene(const std::string& path, const CliOptions& opt, bool print_warnings);
 
-// The output directory exists and is writable; throws one line otherwise.
+// The output directory exists, is a directory and is writable; throws one line otherwise.
 void check_output_dir(const CliOptions& opt);
 
 // Where camera `camera` of `scene` is written.
 std::string image_path(const CliOptions& opt, const JobScene& scene, int camera);
 
-// Every file camera `camera` writes to `image`: the image, the tone-mapped PNG beside an
-// .exr of a camera with <Tonemap>, and with --moments its moment file.
-std::vector<std::string> camera_outputs(const CliOptions& opt, const CameraDesc& cam,
-                                        const std::string& image);
+// Throws input_error (one line) when --camera names a camera the scene file lacks.
+void check_camera_choice(const CliOptions& opt, const JobScene& scene);
+
+// One file a camera writes; `what` names it in messages.
+struct CameraOutput {
+  std::string path;
+  const char* what;  // "image", "tone-mapped image", "moments file", "checkpoint"
+  // Written only with checkpoints and removed once the image is done (image_checkpoint.h):
+  // not one of the outputs whose presence makes the camera complete.
+  bool checkpoint = false;
+};
+
+// Every file camera `camera` writes to `image`, the one listing of them: the image, the
+// tone-mapped PNG beside an .exr of a camera with <Tonemap>, with --moments its moment file,
+// and its checkpoint.
+std::vector<CameraOutput> camera_outputs(const CliOptions& opt, const CameraDesc& cam,
+                                         const std::string& image);
 
 // The cameras of `scene` to render: --camera's or all; with --skip-existing or --resume
 // without those whose outputs all exist and are complete (io/partial_mark.h); a partial

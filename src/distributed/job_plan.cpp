@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "app/output_plan.h"
 #include "app/render_job.h"
 
 namespace rt {
@@ -15,6 +16,7 @@ int round_up(int v, int m) { return (v + m - 1) / m * m; }
 
 JobPlan plan_job(const CliOptions& opt, int ranks) {
   JobPlan plan;
+  check_job_outputs(opt);
   for (int s = 0; s < static_cast<int>(opt.scenes.size()); ++s) {
     const JobScene scene = load_job_scene(opt.scenes[s], opt, true);
     for (int c : job_cameras(opt, scene)) {

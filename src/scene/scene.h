@@ -108,6 +108,10 @@ struct SceneDesc {
 
 struct LoadOptions {
   bool strict = false;  // Every warning is an error (--strict).
+  // Reads the XML, its structure and its cameras only, and lists in `inputs` every file the
+  // scene names (PLY, binaryFile, images) without reading one: the job's first pass, which
+  // plans its outputs before any scene is loaded in full (src/app/output_plan.h).
+  bool outline = false;
 };
 
 // Reads a scene file; throws rt::InputError with one line naming the file, the element

@@ -111,6 +111,7 @@ class Loader {
     scene_.warnings.push_back(line);
   }
   SceneDesc read_document(const tinyxml2::XMLDocument& doc);
+  void list_named_files(const XMLElement* scene);  // LoadOptions::outline
 
   std::string file_;
   LoadOptions options_;

@@ -154,6 +154,10 @@ SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc) {
     scene_.max_depth = static_cast<int>(v);
   }
   read_cameras(scene);
+  if (options_.outline) {
+    list_named_files(scene);
+    return std::move(scene_);
+  }
   read_lights(scene);
   read_brdfs(scene);
   read_materials(scene);
@@ -168,6 +172,33 @@ SceneDesc Loader::read_document(const tinyxml2::XMLDocument& doc) {
     warn(file_ + ": Objects: skipped " + std::to_string(scene_.degenerate_triangles) +
          " degenerate triangles");
   return std::move(scene_);
+}
+
+// Every element's plyFile and binaryFile, and every Textures > Images > Image, whether used
+// or not, resolved as the readers resolve them: beside the scene file.
+void Loader::list_named_files(const XMLElement* scene) {
+  const std::filesystem::path folder = std::filesystem::path(file_).parent_path();
+  auto add = [&](std::string name) {
+    name.erase(0, name.find_first_not_of(" \t\r\n"));
+    name.erase(name.find_last_not_of(" \t\r\n") + 1);
+    std::filesystem::path p(name);
+    if (p.empty()) return;
+    scene_.inputs.push_back((p.is_relative() ? folder / p : p).string());
+  };
+  std::vector<const XMLElement*> open{scene};
+  while (!open.empty()) {
+    const XMLElement* e = open.back();
+    open.pop_back();
+    for (const char* a : {"plyFile", "binaryFile"})
+      if (const char* v = e->Attribute(a)) add(v);
+    for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+      open.push_back(c);
+  }
+  const XMLElement* ts = scene->FirstChildElement("Textures");
+  const XMLElement* images = ts ? ts->FirstChildElement("Images") : nullptr;
+  for (const XMLElement* im = images ? images->FirstChildElement("Image") : nullptr; im;
+       im = im->NextSiblingElement("Image"))
+    add(text_of(im));
 }
 
 }  // namespace loader
