@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "io/file_util.h"
 #include "output_check.h"
 #include "render_job.h"
 #include "scene/xml_text.h"
@@ -33,18 +34,6 @@ bool file_id(const std::string& path, std::pair<dev_t, ino_t>* id) {
 }
 
 }  // namespace
-
-// Letter case is folded on every platform, not only where the file system folds it: the
-// scenes and the outputs of a job move between Linux and file systems that fold case (the
-// defaults of macOS and Windows, FAT and exFAT, SMB shares), where two names that differ
-// only in case are one file, and asking whether a folder folds case would need a write.
-// Only ASCII letters are folded; other characters are compared as they are.
-std::string same_file_key(const std::string& path) {
-  std::error_code ec;
-  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  if (ec) p = fs::absolute(path, ec).lexically_normal();
-  return folded(p.string());
-}
 
 OutputPlan plan_outputs(const CliOptions& opt) {
   OutputPlan plan;

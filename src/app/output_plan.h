@@ -35,12 +35,9 @@ struct OutputPlan {
 OutputPlan plan_outputs(const CliOptions& opt);
 
 // plan_outputs, then refuses, in one line naming both cameras (scene file and the camera's
-// element) and the file, two outputs that are one file (after "a/./b", links and letter
-// case) and an output that would replace an input.
+// element) and the file, two outputs that are one file (same_file_key, io/file_util.h: after
+// "a/./b", --output-dir's spelling, links and letter case) and an output that would replace
+// an input (also through a hard link).
 void check_job_outputs(const CliOptions& opt);
-
-// The key under which two paths are one file: absolute, normalized, links of the existing
-// part resolved, ASCII letters folded to lower case.
-std::string same_file_key(const std::string& path);
 
 }  // namespace rt

@@ -6,9 +6,11 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <system_error>
 
 namespace rt {
@@ -132,6 +134,21 @@ int write_file_atomic(const std::string& path, const void* data, size_t size) {
 void remove_pending_temporaries() {
   for (PendingSlot& s : g_pending)
     if (s.live.load()) ::unlink(s.path);
+}
+
+// Letter case is folded on every platform, not only where the file system folds it: scenes
+// and their outputs move between Linux and file systems that fold case (the defaults of
+// macOS and Windows, FAT and exFAT, SMB shares), where two names that differ only in case
+// are one file; and whether a folder folds case could only be learnt by writing in it.
+// Only ASCII letters are folded; other characters are compared as they are.
+std::string same_file_key(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path p =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+  if (ec) p = std::filesystem::absolute(path, ec).lexically_normal();
+  std::string key = p.string();
+  for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return key;
 }
 
 }  // namespace rt

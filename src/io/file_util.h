@@ -25,6 +25,12 @@ int write_file_atomic(const std::string& path, const void* data, size_t size);
 // called by the abort path of the signal handlers before _exit.
 void remove_pending_temporaries();
 
+// The key under which two paths name one file: absolute, normalized ("a/./b/../c"), links
+// of the part that exists resolved, ASCII letters folded to lower case (on every platform:
+// see file_util.cpp). Used to compare the files a run writes with each other and with the
+// files it reads, before it writes any (src/app/output_plan.h, rtconvert).
+std::string same_file_key(const std::string& path);
+
 // strerror for an errno value, thread-safe.
 std::string errno_text(int err);
 

@@ -80,10 +80,19 @@ std::vector<ImageFile> course_image_files(const std::string& xml_path, const rt:
 // then gives every material its default grey without a word.
 void warn_missing_material_libraries(const std::string& obj, Report& report);
 
-// Refuses (ConvertError) an output in a folder that does not exist, and an output that is
-// the input: the same file through another path, a link or, on a file system that folds
-// case, another letter case.
-void check_not_input(const std::string& input, const std::string& output);
+// A file a conversion writes, and what it is in messages ("output", "mesh", "image",
+// "material library").
+struct PlannedFile {
+  std::string path;
+  const char* what;
+};
+
+// Refuses (ConvertError, one line), before anything is written: a first output (the
+// conversion's own file) in a folder that does not exist; an output that is one of `inputs`
+// (the same path after normalizing, links and letter case, rt::same_file_key, or the same
+// file through a hard link); two outputs that are one file.
+void check_conversion_files(const std::vector<PlannedFile>& outputs,
+                            const std::vector<std::string>& inputs);
 
 // Warnings for what the target format cannot carry (format "glb", "obj", "pbrt", "xml"),
 // one line per feature, naming it.
@@ -97,8 +106,10 @@ ImportedScene import_with_assimp(const std::string& path, int default_width, boo
                                  Report& report);
 
 // Writes the scene as course XML; meshes above a few triangles go to binary PLY files
-// beside it.
-void write_course_xml(const ImportedScene& in, const std::string& xml_path, Report& report);
+// beside it. Nothing is written when one of its files (the XML, the PLY files and images
+// beside it) would replace one of `inputs` or another of them (check_conversion_files).
+void write_course_xml(const ImportedScene& in, const std::string& xml_path, Report& report,
+                      const std::vector<std::string>& inputs = {});
 
 // Export through Assimp: format "glb2" (binary glTF 2.0, with cameras, lights and extras
 // added to its JSON) or "obj" (OBJ + MTL).

@@ -58,10 +58,13 @@ int main(int argc, char** argv) {
   const std::string in = extension(o.input), out = extension(o.output);
   try {
     // Before anything is read or written: an output that is the input would replace the
-    // scene by a lossy rewrite of itself. An OBJ export writes its MTL file too.
-    rtconvert::check_not_input(o.input, o.output);
-    if (out == "obj")  // Assimp names it after the OBJ, with ".mtl" in lower case.
-      rtconvert::check_not_input(o.input, o.output.substr(0, o.output.size() - 3) + "mtl");
+    // scene by a lossy rewrite of itself. An OBJ export writes its MTL file too (Assimp
+    // names it after the OBJ, with ".mtl" in lower case). Once the input is read, every
+    // file it names is checked too, and an XML output's files beside it (write_course_xml).
+    std::vector<rtconvert::PlannedFile> outputs{{o.output, "output"}};
+    if (out == "obj")
+      outputs.push_back({o.output.substr(0, o.output.size() - 3) + "mtl", "material library"});
+    rtconvert::check_conversion_files(outputs, {o.input});
     if (in == "xml") {
       if (out != "glb" && out != "obj" && out != "pbrt" && out != "xml")
         throw rtconvert::ConvertError(o.output + ": cannot export to '." + out +
@@ -70,6 +73,8 @@ int main(int argc, char** argv) {
       for (const auto& w : scene.scene.warnings) report.warn(w);
       scene.images = rtconvert::course_image_files(o.input, scene.scene);
       rtconvert::warn_dropped(scene.scene, o.output, out, report);
+      const std::vector<std::string>& inputs = scene.scene.inputs;  // The XML, PLYs, images.
+      if (out != "xml") rtconvert::check_conversion_files(outputs, inputs);
       if (out == "glb") {
         rtconvert::export_with_assimp(scene.scene, o.output, "glb2", report, scene.images);
       } else if (out == "obj") {
@@ -77,7 +82,7 @@ int main(int argc, char** argv) {
       } else if (out == "pbrt") {
         rtconvert::export_pbrt(scene.scene, o.output, report);
       } else {
-        rtconvert::write_course_xml(scene, o.output, report);
+        rtconvert::write_course_xml(scene, o.output, report, inputs);
       }
     } else {
       if (out != "xml")
@@ -85,7 +90,10 @@ int main(int argc, char** argv) {
                                       out + "'");
       rtconvert::ImportedScene scene =
           rtconvert::import_with_assimp(o.input, o.width, o.use_extras, report);
-      rtconvert::write_course_xml(scene, o.output, report);
+      std::vector<std::string> inputs{o.input};  // The model and the image files it names.
+      for (const rtconvert::ImageFile& f : scene.images)
+        if (f.bytes.empty()) inputs.push_back(f.path);
+      rtconvert::write_course_xml(scene, o.output, report, inputs);
     }
   } catch (const std::exception& e) {
     // Loader, Assimp and conversion errors alike: one line naming the file and the feature.

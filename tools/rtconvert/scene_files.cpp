@@ -1,5 +1,6 @@
 // The files around a conversion: the folder beside an XML output, the image files behind a
-// course scene's textures, and the refusal to write over the input.
+// course scene's textures, and the check of what a conversion writes against what it reads.
+#include <sys/stat.h>
 #include <tinyxml2.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <sstream>
 
 #include "convert.h"
+#include "io/file_util.h"
 
 namespace rtconvert {
 namespace fs = std::filesystem;
@@ -84,16 +86,41 @@ void warn_missing_material_libraries(const std::string& obj, Report& report) {
   }
 }
 
-void check_not_input(const std::string& input, const std::string& output) {
+void check_conversion_files(const std::vector<PlannedFile>& outputs,
+                            const std::vector<std::string>& inputs) {
   std::error_code ec;
-  const fs::path folder = fs::path(output).parent_path();
-  if (!folder.empty() && !fs::is_directory(folder, ec))
-    throw ConvertError(output + ": the folder '" + folder.string() + "' does not exist");
-  // equivalent() compares the files themselves (device and inode): other spellings of
-  // the path, links and folded letter case all come to the same file.
-  if (fs::exists(output, ec) && fs::equivalent(input, output, ec))
-    throw ConvertError(output + ": is the input file " + input +
-                       "; refusing to overwrite it (choose another output name)");
+  // Inputs by path key and, where they exist, by the file itself (a hard link).
+  std::map<std::string, std::string> read;
+  std::map<std::pair<dev_t, ino_t>, std::string> read_ids;
+  for (const std::string& in : inputs) {
+    if (!read.emplace(rt::same_file_key(in), in).second) continue;
+    struct stat st;
+    if (::stat(in.c_str(), &st) == 0) read_ids.emplace(std::make_pair(st.st_dev, st.st_ino), in);
+  }
+  std::map<std::string, const PlannedFile*> written;
+  for (const PlannedFile& o : outputs) {
+    const fs::path folder = fs::path(o.path).parent_path();
+    // The side folder (OUT_files) is made by the conversion; the output's own must exist.
+    if (&o == &outputs.front() && !folder.empty() && !fs::is_directory(folder, ec))
+      throw ConvertError(o.path + ": the folder '" + folder.string() + "' does not exist");
+    const std::string key = rt::same_file_key(o.path);
+    auto in = read.find(key);
+    std::string input = in == read.end() ? "" : in->second;
+    struct stat st;
+    if (input.empty() && ::stat(o.path.c_str(), &st) == 0) {
+      auto id = read_ids.find({st.st_dev, st.st_ino});
+      if (id != read_ids.end()) input = id->second;
+    }
+    if (!input.empty())
+      throw ConvertError(o.path + ": the " + o.what + " is the input file " + input +
+                         "; refusing to overwrite it (choose another output name)");
+    const auto [it, first] = written.emplace(key, &o);
+    if (!first)
+      throw ConvertError(o.path + ": the " + o.what + " and the " + it->second->what + " " +
+                         it->second->path +
+                         " are one file where the file system folds letter case (choose "
+                         "another output name)");
+  }
 }
 
 }  // namespace rtconvert

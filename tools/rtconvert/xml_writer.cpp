@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/file_util.h"
 #include "xml_format.h"
 
 namespace rtconvert {
@@ -45,8 +46,9 @@ std::string ply_bytes(const rt::MeshDesc& mesh) {
   return out.str();
 }
 
-// The files written beside the XML; removed again when the conversion fails, so that no
-// stray file is left.
+// The files that go beside the XML, gathered while the XML is written and written only
+// once the whole conversion's files are checked against its inputs (check_conversion_files),
+// so that a refused conversion writes nothing; removed again when a later write fails.
 class SideFiles {
  public:
   explicit SideFiles(const std::string& xml_path)
@@ -57,23 +59,32 @@ class SideFiles {
     std::error_code ec;
     if (created_) std::filesystem::remove(folder_, ec);  // Only when empty.
   }
-  // Writes `bytes` as `file` in the folder; returns the name the XML uses.
-  std::string write(const std::string& file, const std::string& bytes) {
+  // Plans `bytes` as `file` in the folder; returns the name the XML uses.
+  std::string add(const std::string& file, std::string bytes, const char* what) {
+    planned_.push_back({(std::filesystem::path(folder_) / file).string(), what});
+    bytes_.push_back(std::move(bytes));
+    return name_ + "/" + file;
+  }
+  const std::vector<PlannedFile>& planned() const { return planned_; }
+  void write_all() {
     std::error_code ec;
-    if (!std::filesystem::is_directory(folder_, ec)) {
+    if (!planned_.empty() && !std::filesystem::is_directory(folder_, ec)) {
       if (!std::filesystem::create_directory(folder_, ec))
         throw ConvertError(folder_ + ": cannot create the folder for the meshes and images");
       created_ = true;
     }
-    const std::string path = (std::filesystem::path(folder_) / file).string();
-    write_file_atomically(path, bytes);
-    written_.push_back(path);
-    return name_ + "/" + file;
+    for (size_t i = 0; i < planned_.size(); ++i) {
+      write_file_atomically(planned_[i].path, bytes_[i]);
+      written_.push_back(planned_[i].path);
+      std::string().swap(bytes_[i]);
+    }
   }
   void keep() { done_ = true; }
 
  private:
   std::string folder_, name_;
+  std::vector<PlannedFile> planned_;
+  std::vector<std::string> bytes_;
   std::vector<std::string> written_;
   bool created_ = false, done_ = false;
 };
@@ -93,11 +104,12 @@ std::vector<std::string> image_names(const std::vector<ImageFile>& images,
       out.push_back(ec || rel.empty() ? fs::absolute(f.path).string() : rel.generic_string());
       continue;
     }
+    // Names are told apart with letter case folded: one file where the file system folds it.
     std::string name = f.name;
-    for (int k = 2; !taken.insert(name).second; ++k)
+    for (int k = 2; !taken.insert(rt::same_file_key(name)).second; ++k)
       name = fs::path(f.name).stem().string() + "_" + std::to_string(k) +
              fs::path(f.name).extension().string();
-    out.push_back(side.write(name, f.bytes));
+    out.push_back(side.add(name, f.bytes, "image"));
   }
   return out;
 }
@@ -113,7 +125,8 @@ bool float_exact(const rt::MeshDesc& mesh) {
 
 }  // namespace
 
-void write_course_xml(const ImportedScene& in, const std::string& xml_path, Report& report) {
+void write_course_xml(const ImportedScene& in, const std::string& xml_path, Report& report,
+                      const std::vector<std::string>& inputs) {
   const rt::SceneDesc& s = in.scene;
   SideFiles side(xml_path);
   std::ostringstream x;
@@ -210,32 +223,27 @@ void write_course_xml(const ImportedScene& in, const std::string& xml_path, Repo
         std::string name = "mesh" + std::to_string(o.mesh + 1);
         if (in.mesh_names.size() == s.meshes.size() && !in.mesh_names[o.mesh].empty())
           name += "_" + in.mesh_names[o.mesh];
-        ply_of[o.mesh] = side.write(name + ".ply", ply_bytes(mesh));
+        ply_of[o.mesh] = side.add(name + ".ply", ply_bytes(mesh), "mesh");
       }
       x << "      <Faces plyFile=\"" << xml::text(ply_of[o.mesh]) << "\"/>\n";
     }
     x << "    </" << tag << ">\n";
   }
   x << "  </Objects>\n</Scene>\n";
+  std::vector<PlannedFile> files{{xml_path, "output"}};
+  files.insert(files.end(), side.planned().begin(), side.planned().end());
+  check_conversion_files(files, inputs);
+  side.write_all();
   write_file_atomically(xml_path, x.str());
   side.keep();
   (void)report;
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw ConvertError(path + ": cannot write");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw ConvertError(path + ": cannot write (rename failed)");
-  }
+  // The project's atomic write: a temporary of a fresh name, so no file of the user's is
+  // ever truncated on the way.
+  if (const int err = rt::write_file_atomic(path, content.data(), content.size()))
+    throw ConvertError(path + ": cannot write: " + rt::errno_text(err));
 }
 
 }  // namespace rtconvert

@@ -6,11 +6,13 @@
 #   current folder;
 # - convert_wrap_test.cpp: repeated texture coordinates moved into the course's [0, 1];
 # - convert_extras_test.cpp: directional and spot lights through glTF extras and XML bit
-#   for bit, out-of-range extras refused.
+#   for bit, out-of-range extras refused;
+# - convert_plan_test.cpp: outputs (the file, the meshes and images beside an XML) checked
+#   against the inputs and each other before anything is written.
 if(NOT TARGET rtconvert)
   return()  # Said once by convert.cmake.
 endif()
-foreach(name files wrap extras)
+foreach(name files wrap extras plan)
   add_executable(convert_${name}_tests ${CMAKE_CURRENT_LIST_DIR}/convert_${name}_test.cpp)
   target_link_libraries(convert_${name}_tests PRIVATE rtconvert_lib GTest::gtest_main)
   target_compile_definitions(
