@@ -20,7 +20,9 @@
 #             counts.
 # progress:   a resumed render's progress starts at its checkpoint's samples: one process's
 #             first line shows at least them, the job line under mpirun more than 0 %.
-# Exit status: 0 pass, 1 fail, 77 skipped (no OpenCL device).
+# notice:     (SCENE: hw3's cornellbox_boxes_dynamic.xml) the --cull-back-faces notice is
+#             printed once under mpirun, the image in tiles; not with --cull-back-faces.
+# Exit status: 0 pass, 1 fail, 77 skipped (no OpenCL device, no scene).
 set -uo pipefail
 rt="$1" mpiexec="$2" scene="$3" work="$4" case="$5" device="$6"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -169,6 +171,18 @@ case "$case" in
     [ -n "$pct" ] || fail "no job line: $(head -c 400 job.txt)"
     awk -v p="$pct" 'BEGIN { exit !(p > 0) }' || fail "the resumed job's line started at $pct %"
     echo "ok: resumed progress starts at $first spp (checkpoint $saved) and at $pct % under mpirun"
+    ;;
+  notice)
+    [ -f "$scene" ] || { echo "SKIP: $scene is not present (the course's scenes live in ../shared/scenes)"; exit 77; }
+    mkdir -p out
+    box=("${mpi[@]}" "$rt" "$scene" --device "$device" --resolution-scale 0.25 --spp 1 --tile-rows 32 --output-dir out)
+    "${box[@]}" > /dev/null 2> err.txt || fail "mpirun failed: $(cat err.txt)"
+    [ "$(grep -c '^notice: .*--cull-back-faces' err.txt)" = 1 ] || fail "expected one --cull-back-faces notice, got: $(cat err.txt)"
+    grep -Eq '^notice: out/cornellbox_boxes_dynamic.png: [0-9]+ % of camera rays first hit the back of a surface' err.txt ||
+      fail "the notice does not say what it found: $(cat err.txt)"
+    "${box[@]}" --cull-back-faces > /dev/null 2> err2.txt || fail "mpirun --cull-back-faces failed"
+    ! grep -q 'cull-back-faces' err2.txt || fail "the notice was given with --cull-back-faces: $(cat err2.txt)"
+    echo "ok: the back-face notice once under mpirun"
     ;;
   *) fail "unknown case $case" ;;
 esac
