@@ -5,6 +5,7 @@
 // rays whose first hit is the back of a surface is the sign.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ constexpr double kBackFaceNoticeShare = 0.20;
 // by camera `cam`) whose first camera ray hit a surface from behind: the ray through the
 // pixel centre points the way the recorded normal does.
 double back_face_share(const Camera& cam, const std::vector<PrimaryInfo>& primary);
+
+// The count of those pixels in rows [row_begin, row_end) (a distributed rank's band; the
+// film `primary` is the whole image's).
+uint64_t back_face_pixels(const Camera& cam, const std::vector<PrimaryInfo>& primary, int row_begin,
+                          int row_end);
 
 // The notice's text for `share`, or "" when it is below kBackFaceNoticeShare.
 std::string back_face_notice(double share);

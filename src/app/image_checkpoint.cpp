@@ -9,7 +9,8 @@
 namespace rt {
 
 ImageCheckpoint::ImageCheckpoint(const CliOptions& opt, const JobScene& scene, int camera,
-                                 const PreparedScene& prepared, const RenderDevice& device)
+                                 const PreparedScene& prepared, const RenderDevice& device,
+                                 bool bands_allowed)
     : opt_(opt),
       scene_(scene),
       camera_(camera),
@@ -26,6 +27,10 @@ ImageCheckpoint::ImageCheckpoint(const CliOptions& opt, const JobScene& scene, i
   if (!diff.empty())
     throw std::runtime_error(path_ + ": not continued: " + diff +
                              " (render without --resume to start again)");
+  if (!saved_.row_spp.empty() && !bands_allowed)
+    throw std::runtime_error(path_ +
+                             ": not continued here: its bands of rows hold different sample "
+                             "counts (a distributed render stopped); continue it under mpirun");
   hooks_.start_sample = saved_.spp;
   hooks_.accum = &saved_.accum;
   hooks_.primary = &saved_.primary;

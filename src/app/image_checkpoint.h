@@ -17,9 +17,12 @@ class ImageCheckpoint {
  public:
   // Camera `camera` of `scene`, prepared for `device`. With --resume or --skip-existing,
   // reads its <image>.rtcheckpoint when there is one; throws std::runtime_error (one line
-  // naming the first field that differs) when that was made with other settings.
+  // naming the first field that differs) when that was made with other settings, or when
+  // its rows hold different sample counts (a distributed render's, io/checkpoint.h) unless
+  // `bands_allowed` (a distributed rank, which continues each band from its own count).
   ImageCheckpoint(const CliOptions& opt, const JobScene& scene, int camera,
-                  const PreparedScene& prepared, const RenderDevice& device);
+                  const PreparedScene& prepared, const RenderDevice& device,
+                  bool bands_allowed = false);
 
   // The hooks of render_camera: the saved film to start from, and with --checkpoint the
   // saves between passes.
@@ -31,6 +34,14 @@ class ImageCheckpoint {
     h.after_pass = nullptr;
     return h;
   }
+  // The samples every pixel of the saved film holds (0 without one): the progress starts there.
+  int start_sample() const { return hooks_.start_sample; }
+  // The samples each row of the saved film holds (empty: every row holds resume_only()'s
+  // start_sample).
+  const std::vector<int>& saved_rows() const { return saved_.row_spp; }
+  // Everything that changes the film's bytes; rank 0 of a distributed render writes its
+  // checkpoints with the key the rendering rank made.
+  const CheckpointKey& key();
 
   // Writes the render's outputs: an interrupted one's (fewer samples than asked) marked
   // partial, with its checkpoint beside them when checkpoints are asked for (--checkpoint,
@@ -42,7 +53,6 @@ class ImageCheckpoint {
  private:
   void save(RenderDevice& device, int spp);
   bool keeps_checkpoints() const { return opt_.checkpoint_s > 0 || opt_.resume || saved_.spp > 0; }
-  const CheckpointKey& key();
   void write(const RenderResult& r, bool partial);
 
   const CliOptions& opt_;

@@ -101,6 +101,7 @@ bool render_scene(const rt::CliOptions& opt, const rt::JobScene& s,
                               std::to_string(job.total) + "] " + s.desc.cameras[c].image_name;
     rt::show_status(live, label + ": preparing the device...");
     rt::Progress progress(live, label, static_cast<uint64_t>(fc.width) * fc.height, fc.samples);
+    progress.start_at(checkpoint.start_sample());
     rt::DeviceLoadInfo load;
     rt::RenderResult r = rt::render_camera(*device, flat, prepared.kernel, progress,
                                            rt::camera_stop_rule(opt.render.stop, s.desc.cameras[c]),

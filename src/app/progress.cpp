@@ -4,6 +4,7 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -115,6 +116,11 @@ void Progress::begin() {
   last_draw_ = start_ - std::chrono::seconds(1);  // The first add draws.
 }
 
+void Progress::start_at(int spp) {
+  resumed_ = pixels_ * static_cast<uint64_t>(std::max(spp, 0));
+  samples_ = resumed_;
+}
+
 double Progress::elapsed_s() const { return seconds_since(start_); }
 
 void Progress::add(uint64_t samples, uint64_t rays) {
@@ -142,11 +148,13 @@ void Progress::draw() {
   // Whole samples of every pixel: passes cover the image in bands, so mid-pass some rows
   // hold one sample more; the line shows what every pixel has.
   const uint64_t spp_done = pixels_ ? done / pixels_ : 0;
+  const uint64_t taken = done - std::min(done, resumed_);  // In this run.
   char buf[160];
-  std::snprintf(buf, sizeof buf, ": %llu of %d spp (%.1f %%), elapsed %s, %.2f Mrays/s, left %s",
-                static_cast<unsigned long long>(spp_done), spp_, 100 * frac,
-                format_duration(elapsed).c_str(), elapsed > 0 ? rays_.load() / elapsed * 1e-6 : 0.0,
-                frac > 0 ? format_duration(elapsed * (1 - frac) / frac).c_str() : "?");
+  std::snprintf(
+      buf, sizeof buf, ": %llu of %d spp (%.1f %%), elapsed %s, %.2f Mrays/s, left %s",
+      static_cast<unsigned long long>(spp_done), spp_, 100 * frac, format_duration(elapsed).c_str(),
+      elapsed > 0 ? rays_.load() / elapsed * 1e-6 : 0.0,
+      taken > 0 ? format_duration(elapsed * (total - std::min(done, total)) / taken).c_str() : "?");
   draw_line(label_ + buf);
 }
 
@@ -173,14 +181,19 @@ void print_wrote(bool shown, const std::string& file, int spp, double seconds) {
   std::fprintf(stderr, "wrote %s (%d spp, %.2f s)\n", file.c_str(), spp, seconds);
 }
 
-JobProgress::JobProgress(bool enabled, int images, int tasks, uint64_t pixels)
-    : enabled_(enabled), images_(images), tasks_(tasks), pixels_(pixels) {
+JobProgress::JobProgress(bool enabled, int images, int tasks, uint64_t samples, uint64_t resumed)
+    : enabled_(enabled),
+      images_(images),
+      tasks_(tasks),
+      samples_(samples),
+      resumed_(resumed),
+      samples_done_(resumed) {
   start_ = last_draw_ = Clock::now();
   if (enabled_) draw();
 }
 
-void JobProgress::task_done(uint64_t pixels, bool image_written) {
-  pixels_done_ += pixels;
+void JobProgress::task_done(uint64_t samples, bool image_written) {
+  samples_done_ += samples;
   ++tasks_done_;
   if (image_written) ++images_done_;
   if (!enabled_) return;
@@ -200,13 +213,16 @@ void JobProgress::finish() { clear_status(enabled_); }
 
 void JobProgress::draw() {
   const double elapsed = seconds_since(start_);
-  const double frac = pixels_ ? static_cast<double>(pixels_done_) / pixels_ : 1.0;
+  const double frac = samples_ ? static_cast<double>(samples_done_) / samples_ : 1.0;
+  const uint64_t taken = samples_done_ - std::min(samples_done_, resumed_);  // In this run.
   char buf[200];
-  std::snprintf(buf, sizeof buf,
-                "job: %d of %d %s, %d of %d images written (%.1f %%), elapsed %s, left %s",
-                tasks_done_, tasks_, tasks_ == images_ ? "images" : "tiles", images_done_, images_,
-                100 * frac, format_duration(elapsed).c_str(),
-                frac > 0 ? format_duration(elapsed * (1 - frac) / frac).c_str() : "?");
+  std::snprintf(
+      buf, sizeof buf, "job: %d of %d %s, %d of %d images written (%.1f %%), elapsed %s, left %s",
+      tasks_done_, tasks_, tasks_ == images_ ? "images" : "tiles", images_done_, images_,
+      100 * frac, format_duration(elapsed).c_str(),
+      taken > 0 ? format_duration(elapsed * (samples_ - std::min(samples_done_, samples_)) / taken)
+                      .c_str()
+                : "?");
   draw_line(buf);
 }
 

@@ -25,6 +25,9 @@ class Progress {
   Progress(bool enabled, std::string label, uint64_t pixels = 0, int spp = 1);
   // Sampling starts now: elapsed time and the rate leave out loading and compiling.
   void begin();
+  // The film already holds `spp` samples of every pixel (a checkpoint continued): the line
+  // starts there, and the time left follows from the samples this run takes.
+  void start_at(int spp);
   // Adds finished work (pixel samples, rays cast); safe from any thread; redraws at most
   // 5 times a second.
   void add(uint64_t samples, uint64_t rays);
@@ -46,6 +49,7 @@ class Progress {
   uint64_t pixels_;
   int spp_;
   std::atomic<uint64_t> samples_{0}, rays_{0};
+  uint64_t resumed_ = 0;  // Samples the film held before this run.
   std::chrono::steady_clock::time_point start_, last_draw_;
   std::mutex mutex_;
 };
@@ -66,11 +70,14 @@ void report_status(const std::string& text);
 std::string format_duration(double seconds);
 
 // The job-wide line of a distributed render (rank 0): tasks (images or tiles) done of
-// the total, images written, elapsed and time left from the pixels finished.
+// the total, images written, the share of the job's pixel samples taken, elapsed and time
+// left from the samples this run took. `resumed`: the samples the checkpoints it continues
+// hold, counted as done from the start.
 class JobProgress {
  public:
-  JobProgress(bool enabled, int images, int tasks, uint64_t pixels);
-  void task_done(uint64_t pixels, bool image_written);
+  JobProgress(bool enabled, int images, int tasks, uint64_t samples, uint64_t resumed = 0);
+  // A task is done that took `samples` pixel samples.
+  void task_done(uint64_t samples, bool image_written);
   // Redraws at most once a second, so elapsed time moves while long tasks run.
   void tick();
   // Erases the line (before another line is printed); the next task_done draws it again.
@@ -82,7 +89,7 @@ class JobProgress {
   void draw();
   bool enabled_;
   int images_, tasks_, images_done_ = 0, tasks_done_ = 0;
-  uint64_t pixels_, pixels_done_ = 0;
+  uint64_t samples_, resumed_, samples_done_;
   std::chrono::steady_clock::time_point start_, last_draw_;
 };
 

@@ -4,17 +4,17 @@
 
 #include <algorithm>
 #include <chrono>
-#include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <mutex>
 #include <thread>
 
+#include "app/interrupt.h"
 #include "app/progress.h"
 #include "app/render_job.h"
 #include "distributed/coordinator.h"
+#include "distributed/local_worker.h"
 #include "distributed/mpi_link.h"
 #include "distributed/tile_worker.h"
 #include "util/parallel_for.h"
@@ -24,6 +24,7 @@ namespace {
 
 struct TaskMessage {
   int32_t index = kStopTask;
+  int32_t stop_sent = 0;  // With kStopTask: rank 0 sent this rank kTagStop before it.
   TileTask task;
 };
 
@@ -64,7 +65,21 @@ bool fault_due(int rank, int tasks_received, const char* kind) {
 constexpr bool fault_due(int, int, const char*) { return false; }
 #endif
 
-// Ranks above 0: ask, render, send the band back, until told to stop or a task fails.
+BandInfo band_info(const TileResult& r, bool final_band, int signal) {
+  BandInfo b;
+  b.row_spp = r.row_spp;
+  b.key = r.key;
+  b.final_band = final_band;
+  b.stopped = r.stopped;
+  b.signal = signal;
+  b.busy_s = r.busy_s;
+  b.back_faces = r.back_faces;
+  return b;
+}
+
+// Ranks above 0: ask, render, send the band back, until told to stop or a task fails. The
+// job's stop (a signal here, or rank 0's kTagStop) ends the task at a pass; its band goes
+// back with the samples taken.
 void serve(const CliOptions& opt, const NodePlace& place) {
   std::unique_ptr<TileWorker> worker;
   try {
@@ -73,129 +88,83 @@ void serve(const CliOptions& opt, const NodePlace& place) {
     send_text(e.what(), 0, kTagError);
     return;
   }
+  bool told_to_stop = false;
+  auto receive_stop = [&] {
+    MPI_Recv(nullptr, 0, MPI_BYTE, 0, kTagStop, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    told_to_stop = true;
+    request_stop(0);
+  };
+  auto poll_stop = [&] {
+    int flag = 0;
+    MPI_Iprobe(0, kTagStop, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+    if (flag) receive_stop();
+  };
   MPI_Send(nullptr, 0, MPI_BYTE, 0, kTagReady, MPI_COMM_WORLD);
   for (int received = 1;; ++received) {
     TaskMessage m;
     wait_for(0, kTagTask);
     MPI_Recv(&m, sizeof m, MPI_BYTE, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (m.index == kStopTask) return;
+    if (m.index == kStopTask) {
+      if (m.stop_sent && !told_to_stop) {  // No message is left unreceived at MPI_Finalize.
+        wait_for(0, kTagStop);
+        receive_stop();
+      }
+      return;
+    }
     if (fault_due(place.rank, received, "kill")) std::raise(SIGKILL);
+    if (stop_requested().load()) {
+      ResultHeader h;
+      h.task = m.index;
+      h.declined = 1;
+      h.signal = stop_signal();
+      MPI_Send(&h, sizeof h, MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD);
+      continue;
+    }
     TileResult r;
     try {
       if (fault_due(place.rank, received, "fail")) throw std::runtime_error("injected failure");
-      r = worker->render(m.task);
+      r = worker->render(
+          m.task,
+          [&](const TileResult& snap) { send_band(m.index, snap, false, stop_signal(), opt); },
+          poll_stop);
     } catch (const std::exception& e) {
       send_text(e.what(), 0, kTagError);
       return;
     }
-    const ResultHeader h{m.index, r.spp, r.busy_s};
-    MPI_Send(&h, sizeof h, MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD);
-    send_bytes(r.accum.data(), r.accum.size() * sizeof(PixelAccum), 0, kTagFilm);
-    // First-hit facts only go into moment files; without them the band is 48 of 80 bytes.
-    if (opt.moments)
-      send_bytes(r.primary.data(), r.primary.size() * sizeof(PrimaryInfo), 0, kTagFilm);
+    send_band(m.index, r, true, stop_signal(), opt);
   }
 }
 
-// Rank 0's own worker: a thread rendering the tasks the coordinating thread hands it, so
-// only that thread calls MPI.
-class LocalWorker {
- public:
-  LocalWorker(const CliOptions& opt, const NodePlace& place)
-      : thread_([this, &opt, place] { loop(opt, place); }) {}
-  ~LocalWorker() {
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      quit_ = true;
-    }
-    cv_.notify_all();
-    thread_.join();
+// Receives the film of a band whose header `h` came from `src` into the job's image.
+BandInfo receive_band(JobCoordinator& job, const CliOptions& opt, const ResultHeader& h, int src,
+                      uint64_t* bytes) {
+  const TileTask& t = job.task(h.task);
+  const uint64_t pixels = job.task_pixels(h.task);
+  BandInfo b;
+  b.final_band = h.final_band != 0;
+  b.stopped = h.stopped != 0;
+  b.signal = h.signal;
+  b.busy_s = h.busy_s;
+  b.back_faces = h.back_faces;
+  b.row_spp.resize(t.row_end - t.row_begin);
+  recv_bytes(b.row_spp.data(), b.row_spp.size() * sizeof(int), src, kTagFilm);
+  if (h.key_bytes > 0) {
+    std::string key(h.key_bytes, '\0');
+    recv_bytes(key.data(), key.size(), src, kTagFilm);
+    b.key = parse_key_text(key);
   }
-  void assign(int32_t index, const TileTask& task) {
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      index_ = index;
-      task_ = task;
-    }
-    cv_.notify_all();
+  recv_bytes(job.accum_rows(h.task), pixels * sizeof(PixelAccum), src, kTagFilm);
+  *bytes = b.row_spp.size() * sizeof(int) + h.key_bytes + pixels * sizeof(PixelAccum);
+  if (band_needs_primary(opt)) {
+    recv_bytes(job.primary_rows(h.task), pixels * sizeof(PrimaryInfo), src, kTagFilm);
+    *bytes += pixels * sizeof(PrimaryInfo);
   }
-  // Takes a finished result (true), or the failure (*error set); false while busy.
-  bool poll(int32_t* index, TileResult* result, std::string* error) {
-    std::lock_guard<std::mutex> lock(m_);
-    if (!error_.empty()) {
-      *error = error_;
-      error_.clear();
-      return false;
-    }
-    if (!done_) return false;
-    done_ = false;
-    *index = done_index_;
-    *result = std::move(result_);
-    return true;
-  }
-  std::string device_name() {
-    std::unique_lock<std::mutex> lock(m_);
-    cv_.wait(lock, [this] { return opened_; });
-    return device_name_;
-  }
-
- private:
-  void loop(const CliOptions& opt, const NodePlace& place) {
-    std::unique_ptr<TileWorker> worker;
-    try {
-      worker = std::make_unique<TileWorker>(opt, place.local_rank, place.threads);
-    } catch (const std::exception& e) {
-      std::lock_guard<std::mutex> lock(m_);
-      error_ = e.what();
-    }
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      opened_ = true;
-      if (worker) device_name_ = worker->device_name();
-    }
-    cv_.notify_all();
-    if (!worker) return;
-    for (;;) {
-      std::unique_lock<std::mutex> lock(m_);
-      cv_.wait(lock, [this] { return quit_ || index_ != kStopTask; });
-      if (quit_) return;
-      const int32_t index = index_;
-      const TileTask task = task_;
-      index_ = kStopTask;
-      lock.unlock();
-      try {
-        TileResult r = worker->render(task);
-        lock.lock();
-        result_ = std::move(r);
-        done_index_ = index;
-        done_ = true;
-      } catch (const std::exception& e) {
-        lock.lock();
-        error_ = e.what();
-        return;
-      }
-    }
-  }
-
-  std::mutex m_;
-  std::condition_variable cv_;
-  bool quit_ = false, done_ = false, opened_ = false;
-  int32_t index_ = kStopTask, done_index_ = kStopTask;
-  TileTask task_;
-  TileResult result_;
-  std::string error_, device_name_;
-  std::thread thread_;
-};
+  return b;
+}
 
 // Rank 0: hands out tasks, gathers bands, writes images, until every rank has stopped.
 int coordinate(const CliOptions& opt, const NodePlace& place) {
   const auto start = std::chrono::steady_clock::now();
-  // Rank 0 gathers each tile only when it is done, so it has no film to save between
-  // passes; --resume and --skip-existing do continue checkpoints here (tile_worker.cpp).
-  if (opt.checkpoint_s > 0 && !opt.quiet)
-    std::fprintf(stderr,
-                 "notice: --checkpoint writes nothing under mpirun (a checkpoint made in one "
-                 "process is continued here with --resume)\n");
   std::string setup_error;
   JobPlan plan;
   try {
@@ -209,9 +178,10 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
   clear_status(Progress::wanted_mpi(opt.quiet));
   JobCoordinator job(opt, std::move(plan), place.ranks);
   int running = place.ranks;  // Ranks not yet stopped, this one's worker included.
+  std::vector<char> active(place.ranks, 1), stop_sent(place.ranks, 0);
   std::unique_ptr<LocalWorker> local;
   if (setup_error.empty()) {
-    local = std::make_unique<LocalWorker>(opt, place);
+    local = std::make_unique<LocalWorker>(opt, place.local_rank, place.threads);
     job.set_device_name(local->device_name());
   } else {
     --running;
@@ -221,6 +191,7 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
     TaskMessage m;
     if (!job.next(rank, &m.index)) m.index = kStopTask;
     if (m.index != kStopTask) m.task = job.task(m.index);
+    m.stop_sent = stop_sent[rank];
     if (rank == 0) {
       if (m.index == kStopTask)
         --running, local.reset();
@@ -228,11 +199,28 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
         local->assign(m.index, m.task);
     } else {
       MPI_Send(&m, sizeof m, MPI_BYTE, rank, kTagTask, MPI_COMM_WORLD);
-      if (m.index == kStopTask) --running;
+      if (m.index == kStopTask) --running, active[rank] = 0;
+    }
+  };
+  // A band's film is in place: records it (a failed write fails the job on this rank).
+  auto take = [&](int rank, int32_t index, const BandInfo& b, uint64_t bytes, double recv_s) {
+    try {
+      job.band(rank, index, b, bytes, recv_s);
+    } catch (const std::exception& e) {
+      job.fail(0, e.what());
     }
   };
   if (local) hand_out(0);
+  bool stopping = false;
   while (running > 0) {
+    if (stop_requested().load() && !stopping) {
+      stopping = true;  // The ranks still rendering end their tasks at their next pass.
+      for (int r = 1; r < place.ranks; ++r)
+        if (active[r]) {
+          MPI_Send(nullptr, 0, MPI_BYTE, r, kTagStop, MPI_COMM_WORLD);
+          stop_sent[r] = 1;
+        }
+    }
     bool idle = true;
     int flag = 0;
     MPI_Status st;
@@ -246,37 +234,38 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
       } else if (st.MPI_TAG == kTagError) {
         job.fail(src, recv_text(st));
         --running;  // A failed rank leaves on its own.
+        active[src] = 0;
       } else if (st.MPI_TAG == kTagResult) {
         ResultHeader h;
         MPI_Recv(&h, sizeof h, MPI_BYTE, src, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        const uint64_t pixels = job.task_pixels(h.task);
-        const auto t0 = std::chrono::steady_clock::now();
-        recv_bytes(job.accum_rows(h.task), pixels * sizeof(PixelAccum), src, kTagFilm);
-        if (opt.moments)
-          recv_bytes(job.primary_rows(h.task), pixels * sizeof(PrimaryInfo), src, kTagFilm);
-        try {
-          job.complete(
-              src, h.task, h.spp, h.busy_s,
-              pixels * (sizeof(PixelAccum) + (opt.moments ? sizeof(PrimaryInfo) : 0)),
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-        } catch (const std::exception& e) {
-          job.fail(0, e.what());  // Writing the image failed on this rank.
+        if (h.declined) {
+          request_stop(h.signal);
+          hand_out(src);
+        } else {
+          const auto t0 = std::chrono::steady_clock::now();
+          uint64_t bytes = 0;
+          const BandInfo b = receive_band(job, opt, h, src, &bytes);
+          take(src, h.task, b, bytes,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+          if (b.final_band) hand_out(src);
         }
-        hand_out(src);
       }
     }
     if (local) {
       int32_t index;
       TileResult r;
       std::string error;
-      if (local->poll(&index, &r, &error)) {
-        idle = false;
+      if (local->poll_snapshot(&index, &r)) {
         std::copy(r.accum.begin(), r.accum.end(), job.accum_rows(index));
         std::copy(r.primary.begin(), r.primary.end(), job.primary_rows(index));
-        try {
-          job.complete(0, index, r.spp, r.busy_s, 0, 0);
-        } catch (const std::exception& e) {
-          job.fail(0, e.what());
+        take(0, index, band_info(r, false, stop_signal()), 0, 0);
+      }
+      if (local->poll(&index, &r, &error)) {
+        idle = false;
+        if (!r.row_spp.empty()) {
+          std::copy(r.accum.begin(), r.accum.end(), job.accum_rows(index));
+          std::copy(r.primary.begin(), r.primary.end(), job.primary_rows(index));
+          take(0, index, band_info(r, true, stop_signal()), 0, 0);
         }
         hand_out(0);
       } else if (!error.empty()) {
@@ -287,6 +276,13 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
       }
     }
     if (idle) {
+      if (!stopping) {
+        try {
+          job.checkpoint_due();
+        } catch (const std::exception& e) {
+          job.fail(0, e.what());
+        }
+      }
       job.tick();
       std::this_thread::sleep_for(std::chrono::microseconds(500));
     }
@@ -300,6 +296,15 @@ int coordinate(const CliOptions& opt, const NodePlace& place) {
     std::fprintf(stderr, "raytracer: error: %s; the images it was rendering were not written\n",
                  job.failure().c_str());
     return 1;
+  }
+  if (stop_requested().load()) {
+    try {
+      job.write_stopped();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "raytracer: error: %s\n", e.what());
+      return 1;
+    }
+    return interrupt_exit_status();
   }
   return 0;
 }
@@ -316,6 +321,8 @@ int render_distributed(const CliOptions& opt) {
   int status = 0;
   try {
     const NodePlace place = node_place(opt);
+    // mpirun turns a Ctrl-C into SIGTERM to every rank; rank 0 alone speaks.
+    install_interrupt_handlers(opt.quiet || place.rank != 0, true);
     if (place.rank == 0)
       status = coordinate(opt, place);
     else

@@ -9,6 +9,11 @@
 // stops handing out work, prints one line naming the rank and the reason, and exits 1; the
 // images finished before it stay written and no partial image is. A rank killed outright ends
 // the job through mpirun (which names the rank and the signal). --skip-existing resumes.
+//
+// Interrupts: the job's stop is any rank's (a signal there; under mpirun SIGTERM is the
+// user's stop too, app/interrupt.h) or rank 0's kTagStop; every rank ends its task at a pass
+// and sends its band, and rank 0 writes the images in progress partial (with checkpoints
+// when kept) and returns 128 + its signal, once every rank has stopped.
 // This code is compiled only when CMake finds MPI.
 #pragma once
 
@@ -19,8 +24,8 @@ namespace rt {
 // True when the process was started by mpirun/srun (the launcher's environment is set).
 bool launched_by_mpi();
 
-// Runs the job on every rank; returns the exit status (0, or 1 with the line printed by
-// rank 0).
+// Runs the job on every rank; returns the exit status (0; 1 with the line printed by rank
+// 0; on rank 0 after an interrupt 130 or 143, the other ranks 0).
 int render_distributed(const CliOptions& opt);
 
 }  // namespace rt
