@@ -25,8 +25,8 @@ blender=blender
 args=("$@")
 for ((i = 0; i < ${#args[@]}; ++i)); do
   case "${args[i]}" in
-    --build) build="${args[i + 1]}" ;;
-    --blender) blender="${args[i + 1]}" ;;
+    --build) build="${args[i + 1]:-}" ;;
+    --blender) blender="${args[i + 1]:-}" ;;
   esac
 done
 if ! command -v "$blender" > /dev/null; then
