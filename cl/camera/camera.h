@@ -8,7 +8,9 @@
 #include "../scene_types.h"
 
 // Maps [0,1)^2 to the unit disk with Shirley and Chiu's concentric map, so strata stay
-// compact (used only by the optional disk lens).
+// compact (used only by the optional disk lens). Its sine and cosine are
+// util/transcendental.h's, which both devices round alike (glibc's sinf and cosf and PoCL's
+// differ in the last bit for some angles, which moves a camera ray).
 RT_DEVICE real2 SampleConcentricDisk(real2 u) {
   real ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
   if (ox == 0.0f && oy == 0.0f) return make_real2(0.0f, 0.0f);
@@ -20,7 +22,9 @@ RT_DEVICE real2 SampleConcentricDisk(real2 u) {
     r = oy;
     theta = (RT_PI / 2.0f) - (RT_PI / 4.0f) * (ox / oy);
   }
-  return make_real2(r * CosR(theta), r * SinR(theta));
+  real sin_theta, cos_theta;
+  SinCos(theta, &sin_theta, &cos_theta);
+  return make_real2(r * cos_theta, r * sin_theta);
 }
 
 // The width and height of a pixel on the course camera's film: the same for every sample,

@@ -61,7 +61,7 @@ RT_DEVICE_INLINE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Camer
     int record = info != 0 && task.depth == 0;
     int parts = SurfacePartsRead(sd, &task, max_depth, hit, record);
     if (RT_HAS(sd, RT_FEATURE_DIELECTRIC) && task.inside)
-      task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction), 0);
+      task.weight = task.weight * BeerLambert(task.medium, hit.t * Length(task.ray.direction), 1);
     if (parts == 0) {
       // A last hit lit by the ambient term alone (SurfacePartsRead), as DirectLighting would
       // light it: neither the surface point nor a copy of the material is made.
@@ -97,8 +97,10 @@ RT_DEVICE_INLINE real3 RenderSample(RT_PRIVATE const SceneData* sd,
   RT_GLOBAL const SceneHeader* h = sd->header;
   *weight = 1.0f;
   if (h->filter == RT_FILTER_GAUSSIAN) {
+    // util/transcendental.h's exponential, which both devices round alike: glibc's expf and
+    // PoCL's exp differ in the last bit for some of these arguments.
     real dx = cs->film.x - 0.5f, dy = cs->film.y - 0.5f;
-    *weight = ExpR(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
+    *weight = Exp(-(dx * dx + dy * dy) / (2.0f * h->filter_sigma * h->filter_sigma));
   }
 #if RT_COMPILED(RT_FEATURE_PATH_TRACING)
   if (RT_HAS(sd, RT_FEATURE_PATH_TRACING) && (h->flags & RT_FLAG_PATH_TRACING) != 0)

@@ -127,14 +127,17 @@ RT_DEVICE real3 PathEscapedRadiance(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
 
 // Continuation: replaces *p by the path along one lobe of the material at s and pushes the
 // other lobes' branches; returns whether *p goes on. The path splits into every lobe while
-// the stack has room for the extra branches, else follows one lobe, chosen at random.
+// the stack has room for the extra branches, else follows one lobe, chosen at random; with
+// --dielectric choose a dielectric never splits (one lobe, Fresnel picking between its
+// reflected and refracted rays).
 RT_KERNEL_INLINE int ContinuePath(RT_PRIVATE const SceneData* sd, RT_PRIVATE PathState* p,
                                   RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const Material* m,
                                   RaySampler rs, int importance, RT_PRIVATE PathState* stack,
                                   RT_PRIVATE int* pending) {
   BsdfSample lobes[RT_LOBE_COUNT];
   int n = 0;
-  if (RT_PATH_STACK > 1 && HasSpecularLobe(sd, m))
+  int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0 && IsTransmissive(sd, m);
+  if (RT_PATH_STACK > 1 && !choose && HasSpecularLobe(sd, m))
     n = SampleBsdfLobes(sd, m, s, rs, importance, lobes);
   if (n == 0 || *pending + n - 1 > RT_PATH_STACK) {
     lobes[0] = SampleBsdf(sd, m, s, rs, importance);

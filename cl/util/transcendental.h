@@ -11,8 +11,10 @@
 // and transcendental_double_test.cpp state and check the bounds.
 //
 // ExpR, PowR, SinR and CosR (the end of this file) are what tools/to_real.py writes for
-// exp, pow, sin and cos in ray-tracing code: the library's in float, which PoCL and glibc
-// round alike there and with which those images were made, and these functions in double.
+// exp, pow, sin and cos in ray-tracing code: the library's in float and these functions in
+// double. PoCL and glibc do not round the library's alike for every argument (the Gaussian
+// filter's weights, the disk lens's angles and the ray tree's absorption differed in the
+// last bit), so what the devices must agree on takes these functions in float too.
 #ifndef RT_UTIL_TRANSCENDENTAL_H
 #define RT_UTIL_TRANSCENDENTAL_H
 

@@ -164,9 +164,10 @@ OptionTable<CliOptions> make_raytracer_table() {
             "time limit) goes on where it stopped: a partial image is continued from its "
             "checkpoint when it has one, else rendered again")
       .real("--checkpoint", "S", Range::positive(), RT_FIELD(checkpoint_s),
-            "every S seconds (between passes) write the image so far, marked partial, and "
-            "<image>.rtcheckpoint beside it, the film that --resume continues; an interrupt "
-            "writes both too")
+            "write the image so far, marked partial, and <image>.rtcheckpoint beside it, the "
+            "film that --resume continues, at the end of the first pass S or more seconds "
+            "after the last write (passes are then planned to last at most S, but at least one "
+            "sample of the image, which can take longer); an interrupt writes both too")
       .default_is("only on an interrupt")
       .flag("--resume", RT_FIELD(resume),
             "continue every camera that has an <image>.rtcheckpoint to its full sample count, "

@@ -71,17 +71,20 @@ const CheckpointKey& ImageCheckpoint::key() {
 
 const PassHooks* ImageCheckpoint::hooks(RenderDevice& device) {
   last_save_ = std::chrono::steady_clock::now();
-  if (opt_.checkpoint_s > 0)
+  if (opt_.checkpoint_s > 0) {
+    hooks_.pass_seconds = opt_.checkpoint_s;
     hooks_.after_pass = [this, &device](int spp) {
       const auto now = std::chrono::steady_clock::now();
-      if (std::chrono::duration<double>(now - last_save_).count() < opt_.checkpoint_s) return;
-      save(device, spp);
+      const double since = std::chrono::duration<double>(now - last_save_).count();
+      if (since < opt_.checkpoint_s) return;
+      save(device, spp, since);
       last_save_ = std::chrono::steady_clock::now();
     };
+  }
   return &hooks_;
 }
 
-void ImageCheckpoint::save(RenderDevice& device, int spp) {
+void ImageCheckpoint::save(RenderDevice& device, int spp, double since_last) {
   const CameraDesc& cam = scene_.desc.cameras[camera_];
   RenderResult r;
   r.width = cam.width;
@@ -91,8 +94,10 @@ void ImageCheckpoint::save(RenderDevice& device, int spp) {
   device.read_primary(&r.primary);
   write(r, true);
   if (opt_.stats)
-    std::fprintf(stderr, "stats: checkpoint: %s at %d of %d samples per pixel\n", path_.c_str(),
-                 spp, asked_);
+    std::fprintf(
+        stderr,
+        "stats: checkpoint: %s at %d of %d samples per pixel, %.3f s after the last or the start\n",
+        path_.c_str(), spp, asked_, since_last);
 }
 
 // The checkpoint first: an image marked partial has the film that continues it whenever

@@ -25,13 +25,15 @@ class ImageCheckpoint {
                   bool bands_allowed = false);
 
   // The hooks of render_camera: the saved film to start from, and with --checkpoint the
-  // saves between passes.
+  // saves between passes, each at the end of the first pass S or more seconds after the
+  // last save (or the start), and passes no longer than S.
   const PassHooks* hooks(RenderDevice& device);
   // The saved film alone, without the saves between passes: a distributed rank renders
   // only a band of the image, which rank 0 writes (distributed/tile_worker.cpp).
   PassHooks resume_only() const {
     PassHooks h = hooks_;
     h.after_pass = nullptr;
+    h.pass_seconds = 0;
     return h;
   }
   // The samples every pixel of the saved film holds (0 without one): the progress starts there.
@@ -51,7 +53,7 @@ class ImageCheckpoint {
   std::string finish(const RenderResult& r, bool interrupted);
 
  private:
-  void save(RenderDevice& device, int spp);
+  void save(RenderDevice& device, int spp, double since_last);
   bool keeps_checkpoints() const { return opt_.checkpoint_s > 0 || opt_.resume || saved_.spp > 0; }
   void write(const RenderResult& r, bool partial);
 

@@ -33,9 +33,13 @@ std::vector<RenderWork> RenderScheduler::plan() const {
     long want = std::lround(kTargetSeconds / std::max(min_band_cost, 1e-9));
     n = static_cast<int>(
         std::clamp<long>(want, 1, std::min<long>(4L * last_pass_samples_, 1L << 20)));
+    const double per_sample = std::max(image_cost, 1e-12);
+    if (cap_seconds_ > 0)
+      n = static_cast<int>(std::clamp<double>(std::floor(cap_seconds_ / per_sample), 1, n));
     // A last pass no larger than this one is taken with it (see the header).
     const int rest = samples_ - done_;
-    if (take_rest_ && rest <= 2 * n) n = rest;
+    if (take_rest_ && rest <= 2 * n && (cap_seconds_ <= 0 || rest * per_sample <= cap_seconds_))
+      n = rest;
   }
   const bool banded = measured_ && image_cost * n > kSplitSeconds;
   const int s1 = std::min(samples_, done_ + n);
@@ -80,6 +84,7 @@ int sample_rows(RenderDevice& device, const Camera& cam, int row_begin, int row_
                             row_end);
   if (stop.time_limit_s > 0 || stop.noise_target > 0) scheduler.keep_checkpoints();
   if (hooks) scheduler.start_at(std::min(hooks->start_sample, cam.samples));
+  if (hooks && hooks->pass_seconds > 0) scheduler.cap_pass_seconds(hooks->pass_seconds);
   const auto start = Clock::now();
   auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();

@@ -16,7 +16,8 @@
 // most twice its planned samples, its bands then half as tall): the fourfold growth only
 // guards the estimate, and each pass costs every pixel its setup again (at 9 samples:
 // passes of 1 + 8 instead of 1 + 4 + 4, one setup fewer). Under a stop rule the
-// passes stay fourfold, as the points where it is checked.
+// passes stay fourfold, as the points where it is checked. With --checkpoint, which writes
+// only between passes, no pass is planned longer than its interval (cap_pass_seconds).
 #pragma once
 
 #include <atomic>
@@ -52,6 +53,10 @@ class RenderScheduler {
   // The film already holds samples [0, sample) (a checkpoint's): the first pass, one sample
   // that measures the costs, starts there.
   void start_at(int sample) { done_ = sample; }
+  // Plans no pass expected to last over `seconds` (but at least one sample of the tile),
+  // and takes no last pass together with the one before it past that: a checkpoint, written
+  // between passes, then comes within about `seconds` of being due.
+  void cap_pass_seconds(double seconds) { cap_seconds_ = seconds; }
 
  private:
   int width_, height_, samples_, align_, row_begin_, row_end_;
@@ -59,6 +64,7 @@ class RenderScheduler {
   int last_pass_samples_ = 1;
   bool measured_ = false;
   bool take_rest_ = true;
+  double cap_seconds_ = 0;        // 0: passes as long as the target makes them.
   std::vector<double> row_cost_;  // Seconds per sample of each row, as last measured.
 };
 
@@ -76,6 +82,9 @@ struct PassHooks {
   // Called after each pass that more passes follow, with the samples taken, the film on the
   // device (a checkpoint reads it there).
   std::function<void(int samples_done)> after_pass;
+  // When positive, no pass is planned longer than this (RenderScheduler::cap_pass_seconds),
+  // so after_pass runs at least about that often.
+  double pass_seconds = 0;
 };
 
 RenderResult render_camera(RenderDevice& device, const FlatScene& flat, const KernelConfig& kernel,

@@ -11,6 +11,8 @@
 #include <iterator>
 #include <thread>
 
+#include "support/device_harness.h"
+
 #ifndef RT_RAYTRACER_EXE
 #error "RT_RAYTRACER_EXE must name the raytracer executable"
 #endif
@@ -41,8 +43,9 @@ void CliFixture::SetUp() {
 
 Outcome CliFixture::run(const std::string& args, const std::string& env) {
   fs::path o = dir_ / "stdout.txt", e = dir_ / "stderr.txt";
-  std::string cmd = env + " timeout 10 " + quote(RT_RAYTRACER_EXE) + " " + args + " <" +
-                    quote("/dev/null") + " >" + quote(o.string()) + " 2>" + quote(e.string());
+  std::string cmd = env + " timeout " + std::to_string(timeout_s_) + " " + quote(RT_RAYTRACER_EXE) +
+                    " " + args + " <" + quote("/dev/null") + " >" + quote(o.string()) + " 2>" +
+                    quote(e.string());
   auto t0 = std::chrono::steady_clock::now();
   int status = std::system(cmd.c_str());
   Outcome r;
@@ -103,6 +106,21 @@ Outcome CliFixture::finish(pid_t pid) {
 
 Outcome CliFixture::render(const std::string& scene, const std::string& extra) {
   return run(quote(scene) + " --device cpu --quiet --output-dir " + quote(out_) + " " + extra);
+}
+
+void DeviceCliFixture::SetUp() {
+  CliFixture::SetUp();
+  std::string why;
+  if (GetParam() == Device::kOpenCl && !shared_device(Device::kOpenCl, &why))
+    GTEST_SKIP() << "no OpenCL device: " << why;
+}
+
+std::string DeviceCliFixture::device_flag() const {
+  return std::string(" --device ") + device_label(GetParam());
+}
+
+std::string device_param_name(const ::testing::TestParamInfo<Device>& info) {
+  return device_label(info.param);
 }
 
 std::vector<std::string> CliFixture::output_files() const {

@@ -1,5 +1,6 @@
 // Running the built raytracer executable from a test: a fixture with its own temporary
-// directory (the scene it renders is usually kTinyScene), and the outcome of a run.
+// directory (the scene it renders is usually kTinyScene), the same once per device, and the
+// outcome of a run.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "device/device.h"
 #include "support/test_scene.h"
 
 namespace rt::test {
@@ -31,7 +33,8 @@ class CliFixture : public TempDirTest {
   void SetUp() override;
 
   // Runs the raytracer with `args` (already quoted), stdin empty, stdout and stderr captured
-  // to files (so neither is a terminal), under a 10 s timeout; `env` prefixes the command.
+  // to files (so neither is a terminal), under a timeout of timeout_s_ seconds; `env`
+  // prefixes the command.
   Outcome run(const std::string& args, const std::string& env = "");
   // The usual options: CPU, quiet, the temporary output directory.
   Outcome render(const std::string& scene, const std::string& extra = "");
@@ -43,7 +46,27 @@ class CliFixture : public TempDirTest {
   // The names in the output directory.
   std::vector<std::string> output_files() const;
 
-  std::string out_;  // The output directory, dir_/out.
+  std::string out_;     // The output directory, dir_/out.
+  int timeout_s_ = 10;  // run()'s limit: a kernel build under load takes seconds.
 };
+
+// A CliFixture whose parameter is the device every run of the test uses; skipped, saying
+// why, where no OpenCL device is usable.
+class DeviceCliFixture : public CliFixture, public ::testing::WithParamInterface<Device> {
+ protected:
+  void SetUp() override;
+  // " --device cpu" or " --device cl".
+  std::string device_flag() const;
+};
+
+// The instantiation's names: "cpu" and "cl".
+std::string device_param_name(const ::testing::TestParamInfo<Device>& info);
+
+// Instantiates the DeviceCliFixture suite `suite` on both devices, as Devices/<suite>.<test>/cpu
+// and .../cl.
+#define RT_INSTANTIATE_ON_DEVICES(suite)                                                 \
+  INSTANTIATE_TEST_SUITE_P(Devices, suite,                                               \
+                           ::testing::Values(::rt::Device::kCpu, ::rt::Device::kOpenCl), \
+                           ::rt::test::device_param_name)
 
 }  // namespace rt::test
