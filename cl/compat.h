@@ -26,6 +26,15 @@
 #else
 #define RT_KERNEL_NOINLINE static inline
 #endif
+// 1 where code takes its GPU form: in the kernel on any device but a CPU (the host sets
+// RT_CL_CPU_DEVICE on CPU devices, whose compilers and caches favour the CPU reference's
+// forms). A GPU keeps a work-item's private arrays and values in registers and scratch, so
+// its forms hold fewer of them at once.
+#ifdef RT_CL_CPU_DEVICE
+#define RT_GPU_FORMS 0
+#else
+#define RT_GPU_FORMS 1
+#endif
 #define RT_GLOBAL __global
 #define RT_PRIVATE __private
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
@@ -57,6 +66,7 @@
 #define RT_KERNEL_INLINE inline
 #define RT_KERNEL_UNROLL
 #define RT_KERNEL_NOINLINE inline
+#define RT_GPU_FORMS 0
 #define RT_GLOBAL
 #define RT_PRIVATE
 

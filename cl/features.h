@@ -54,8 +54,10 @@
 #ifndef RT_KERNEL_FEATURES
 #define RT_KERNEL_FEATURES RT_FEATURE_ALL
 #endif
-// A compile-time constant in the kernel: untaken branches vanish.
-#define RT_HAS(scene, feature) ((RT_KERNEL_FEATURES & (feature)) != 0)
+// A compile-time constant in the kernel: untaken branches vanish. The scene is named (and
+// so counts as used) though not read, as a function that reads it only through RT_HAS
+// would otherwise have an unused parameter in the kernel.
+#define RT_HAS(scene, feature) ((void)(scene), (RT_KERNEL_FEATURES & (feature)) != 0)
 // For #if around whole functions that only one feature calls: the kernel compiles them
 // only when the scene needs the feature.
 #define RT_COMPILED(feature) ((RT_KERNEL_FEATURES & (feature)) != 0)

@@ -16,6 +16,10 @@ __kernel void render(__global const SceneHeader* header,
   SceneData sd;
   sd.header = header;
   RT_DATA_ARRAYS(RT_KERNEL_FILL)
+#if RT_GPU_FORMS
+  int bvh_stack[RT_BVH_STACK];
+  sd.bvh_stack = bvh_stack;
+#endif
   int pixel = y * header->camera.width + x;
   AccumulatePixel(&sd, x, y, sample_begin, sample_end, &accum[pixel], &primary[pixel]);
 }

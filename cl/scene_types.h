@@ -237,6 +237,12 @@ typedef struct SceneHeader {
 typedef struct SceneData {
   RT_GLOBAL const SceneHeader* header;
   RT_DATA_ARRAYS(RT_SCENE_DATA_MEMBER)
+#if RT_GPU_FORMS
+  // The work-item's one BVH stack (cl/bvh/bvh.h), made by the kernel's entry: its closest-hit
+  // and shadow traversals never overlap, and on a GPU each inlined traversal's own array
+  // would take its own private memory.
+  RT_PRIVATE int* bvh_stack;
+#endif
 } SceneData;
 #undef RT_SCENE_DATA_MEMBER
 

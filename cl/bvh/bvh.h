@@ -12,11 +12,28 @@
 #include "../geometry/transform.h"
 #include "../util/lanes.h"
 
+// The stack entries a traversal needs, for a top level of `top` node levels and meshes of
+// at most `mesh` node levels (a tree of one node has one level), `width` children a node.
+// Why: a visited node pushes its hit children but the one it visits next (the nearest, or
+// a shadow ray's first hit): at most width - 1 entries, a group. A node is visited only as
+// the stack's top or as its parent's next child, so every group above the one it came from
+// is gone by then: the groups on the stack are those of distinct ancestors of the node
+// being visited, one per level above it. After a node of level l (the root's is 1) pushes
+// its own, at most (width - 1) * l entries are held. Entering a mesh from a top-level leaf
+// pushes one sentinel above the top level's groups, and the mesh's groups follow:
+// (width - 1) * (top + mesh) + 1 at most, for closest-hit and shadow rays alike.
+#define RT_BVH_STACK_NEEDED(width, top, mesh) (((width)-1) * ((top) + (mesh)) + 1)
 // Deep enough for a binned-SAH BVH of any mesh the build accepts: the builder caps the
-// binary depth of each level at RT_BVH_MAX_DEPTH (src/bvh/bvh_build.cpp checks it), collapsing
-// never deepens a tree, and each wide level pushes at most RT_BVH_WIDTH - 1 children.
+// binary depth of each level at RT_BVH_MAX_DEPTH (src/bvh/bvh_build.cpp checks it), and
+// collapsing never deepens a tree. The host refuses a scene that needs more
+// (src/device/kernel_config.cpp).
 #define RT_BVH_MAX_DEPTH 64
-#define RT_BVH_STACK (2 * (RT_BVH_WIDTH - 1) * RT_BVH_MAX_DEPTH + 2)
+#define RT_BVH_STACK_MAX(width) (2 * ((width)-1) * RT_BVH_MAX_DEPTH + 2)
+// The kernel's stack: the host sizes it from the scene's trees (-DRT_BVH_STACK, a bucket of
+// RT_BVH_STACK_NEEDED); the CPU reference and a kernel built without it take the bound above.
+#ifndef RT_BVH_STACK
+#define RT_BVH_STACK RT_BVH_STACK_MAX(RT_BVH_WIDTH)
+#endif
 #define RT_STACK_RETURN_TO_WORLD (-1)
 // No node index or leaf reference takes this value; it asks the loop to pop the stack.
 #define RT_BVH_POP (-2147483647 - 1)
@@ -27,7 +44,7 @@
 // reciprocal direction are kept broadcast to every lane, so the node test is lane
 // operations only (broadcasting per node went through memory in the double build).
 typedef struct NodeRay {
-  LaneReal ox, oy, oz, ix, iy, iz;
+  RayLane ox, oy, oz, ix, iy, iz;
   // Byte offsets of the faces into BvhNode.bounds (RT_NODE_BOUND): unsigned, so the address
   // is the node's plus the offset, without a sign extension or a scaling shift.
   uint near_x, near_y, near_z, far_x, far_y, far_z;
@@ -39,18 +56,18 @@ typedef struct NodeRay {
 
 // Sets the origin alone, keeping what depends on the direction (see SetTriangleRayOrigin).
 RT_DEVICE void SetNodeRayOrigin(RT_PRIVATE NodeRay* r, real3 o) {
-  r->ox = LaneSplat(o.x);
-  r->oy = LaneSplat(o.y);
-  r->oz = LaneSplat(o.z);
+  r->ox = RayLaneOf(o.x);
+  r->oy = RayLaneOf(o.y);
+  r->oz = RayLaneOf(o.z);
 }
 
 // The node ray of origin o and reciprocal direction inv_d.
 RT_DEVICE NodeRay MakeNodeRayInv(real3 o, real3 inv_d) {
   NodeRay r;
   SetNodeRayOrigin(&r, o);
-  r.ix = LaneSplat(inv_d.x);
-  r.iy = LaneSplat(inv_d.y);
-  r.iz = LaneSplat(inv_d.z);
+  r.ix = RayLaneOf(inv_d.x);
+  r.iy = RayLaneOf(inv_d.y);
+  r.iz = RayLaneOf(inv_d.z);
   const uint bound = (uint)sizeof(LaneFloat);
   r.near_x = (inv_d.x < 0.0f ? 3 : 0) * bound;
   r.near_y = (inv_d.y < 0.0f ? 4 : 1) * bound;
@@ -76,12 +93,12 @@ RT_DEVICE NodeRay MakeNodeRay(real3 o, real3 d) {
 // culls a box the ray actually touches.
 RT_DEVICE LaneInt IntersectChildBoxes(RT_GLOBAL const BvhNode* node, RT_PRIVATE const NodeRay* r,
                                       real tmax, RT_PRIVATE LaneReal* tnear) {
-  LaneReal nx = (RT_NODE_BOUND(node, r->near_x) - r->ox) * r->ix;
-  LaneReal ny = (RT_NODE_BOUND(node, r->near_y) - r->oy) * r->iy;
-  LaneReal nz = (RT_NODE_BOUND(node, r->near_z) - r->oz) * r->iz;
-  LaneReal fx = (RT_NODE_BOUND(node, r->far_x) - r->ox) * r->ix;
-  LaneReal fy = (RT_NODE_BOUND(node, r->far_y) - r->oy) * r->iy;
-  LaneReal fz = (RT_NODE_BOUND(node, r->far_z) - r->oz) * r->iz;
+  LaneReal nx = (RT_NODE_BOUND(node, r->near_x) - RayLaneRead(r->ox)) * RayLaneRead(r->ix);
+  LaneReal ny = (RT_NODE_BOUND(node, r->near_y) - RayLaneRead(r->oy)) * RayLaneRead(r->iy);
+  LaneReal nz = (RT_NODE_BOUND(node, r->near_z) - RayLaneRead(r->oz)) * RayLaneRead(r->iz);
+  LaneReal fx = (RT_NODE_BOUND(node, r->far_x) - RayLaneRead(r->ox)) * RayLaneRead(r->ix);
+  LaneReal fy = (RT_NODE_BOUND(node, r->far_y) - RayLaneRead(r->oy)) * RayLaneRead(r->iy);
+  LaneReal fz = (RT_NODE_BOUND(node, r->far_z) - RayLaneRead(r->oz)) * RayLaneRead(r->iz);
   // A ray in the plane of a face (zero direction component, origin on the face) gives
   // 0 * inf = NaN there. It stays inside that slab for every t, so the slab must constrain
   // nothing, and it does not: the other face gives -inf as an entry or +inf as an exit,
@@ -188,7 +205,11 @@ RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
                                     int any_hit, int cull, RT_PRIVATE Hit* hit) {
   real3 ray_origin = make_real3(ray_in->origin.x, ray_in->origin.y, ray_in->origin.z);
   real3 ray_direction = make_real3(ray_in->direction.x, ray_in->direction.y, ray_in->direction.z);
+#if RT_GPU_FORMS
+  RT_PRIVATE int* stack = sd->bvh_stack;
+#else
   int stack[RT_BVH_STACK];
+#endif
   int sp = 0;
   int ref = sd->header->tlas_root;  // A node index, or a leaf reference (RtLeafRef).
   int instance = -1;                // The instance whose BVH we are in, or -1 at the top level.
@@ -199,7 +220,10 @@ RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
   // only inside instances, so only an instance's triangle ray is ever made; while
   // instances see the world's direction, its direction-dependent part is made once.
   real3 inv_d = ReciprocalDirection(ray_direction);
-  NodeRay world_nr = MakeNodeRayInv(ray_origin, inv_d), object_nr;
+  NodeRay world_nr = MakeNodeRayInv(ray_origin, inv_d);
+#if !RT_GPU_FORMS
+  NodeRay object_nr;
+#endif
   TriangleRay object_tr;
   int tr_has_world_direction = 0;
   // Whether a translation keeps the ray's direction (IdentityKeepsDirection), and the
@@ -272,8 +296,14 @@ RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
           }
         } else {
           real3 id = TransformVector(inst->world_to_object, ray_direction);
+#if RT_GPU_FORMS
+          // On a GPU one node ray, remade on return: a pointer to either of two would
+          // keep both in private memory.
+          world_nr = MakeNodeRay(io, id);
+#else
           object_nr = MakeNodeRay(io, id);
           nr = &object_nr;
+#endif
           object_tr = MakeTriangleRay(io, id);
           tr_has_world_direction = 0;
         }
@@ -304,11 +334,15 @@ RT_KERNEL_INLINE int IntersectScene(RT_PRIVATE const SceneData* sd, RT_PRIVATE c
       ref = stack[--sp];
       if (ref != RT_STACK_RETURN_TO_WORLD) break;
       instance = -1;
+#if RT_GPU_FORMS
+      world_nr = MakeNodeRayInv(ray_origin, inv_d);
+#else
       if (nr == &world_nr) {
         SetNodeRayOrigin(&world_nr, ray_origin);
       } else {
         nr = &world_nr;
       }
+#endif
     }
   }
 }

@@ -19,7 +19,7 @@ typedef struct TriangleRay {
 #endif
   // The permuted origin and the shear broadcast to every lane, for IntersectTriangleBlock,
   // and kx, ky, kz as byte offsets into a block's vertex lanes (RT_BLOCK_LANES).
-  LaneReal lane_ox, lane_oy, lane_oz, lane_sx, lane_sy, lane_sz;
+  RayLane lane_ox, lane_oy, lane_oz, lane_sx, lane_sy, lane_sz;
   uint off_x, off_y, off_z;
 } TriangleRay;
 
@@ -36,9 +36,9 @@ RT_DEVICE void SetTriangleRayOrigin(RT_PRIVATE TriangleRay* tr, real3 origin) {
 #ifndef RT_REAL_DOUBLE
   tr->origin_quad = QuadFrom3(origin);
 #endif
-  tr->lane_ox = LaneSplat(Component(origin, tr->kx));
-  tr->lane_oy = LaneSplat(Component(origin, tr->ky));
-  tr->lane_oz = LaneSplat(Component(origin, tr->kz));
+  tr->lane_ox = RayLaneOf(Component(origin, tr->kx));
+  tr->lane_oy = RayLaneOf(Component(origin, tr->ky));
+  tr->lane_oz = RayLaneOf(Component(origin, tr->kz));
 }
 
 RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
@@ -63,9 +63,9 @@ RT_DEVICE TriangleRay MakeTriangleRay(real3 origin, real3 dir) {
   tr.off_x = (uint)tr.kx * (uint)sizeof(LaneFloat);
   tr.off_y = (uint)tr.ky * (uint)sizeof(LaneFloat);
   tr.off_z = (uint)tr.kz * (uint)sizeof(LaneFloat);
-  tr.lane_sx = LaneSplat(tr.sx);
-  tr.lane_sy = LaneSplat(tr.sy);
-  tr.lane_sz = LaneSplat(tr.sz);
+  tr.lane_sx = RayLaneOf(tr.sx);
+  tr.lane_sy = RayLaneOf(tr.sy);
+  tr.lane_sz = RayLaneOf(tr.sz);
   SetTriangleRayOrigin(&tr, origin);
   return tr;
 }
@@ -120,19 +120,75 @@ RT_DEVICE int IntersectTriangle(RT_PRIVATE const TriangleRay* tr, real3 p0, real
 // triangle at exactly the distance of the hit found so far is a tie, which the traversal
 // settles by index (ClosestHitWins in cl/bvh/bvh.h), so that the closest hit does not depend on
 // the order triangles are tested in. With any_hit the first lane hit is returned.
+#if RT_GPU_FORMS
+// On a GPU, a lane at a time: a block's vectors would take four registers for each of the
+// test's values, and its arrays (the best lane's t and barycentrics) would be indexed
+// registers. Each lane computes what its lane of the vector form computes, and the best
+// lane is chosen by the same rule.
+#define RT_BLOCK_LANE(block, k, offset, i) \
+  ((real)((RT_GLOBAL const float*)((RT_GLOBAL const char*)((block)->v + 3 * (k)) + (offset)))[i])
 RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
                                      RT_PRIVATE const TriangleRay* tr, real tmax, int cull,
                                      int any_hit, RT_PRIVATE real* t, RT_PRIVATE real* b1,
                                      RT_PRIVATE real* b2) {
-  LaneReal az = RT_BLOCK_LANES(block, 0, tr->off_z) - tr->lane_oz;
-  LaneReal bz = RT_BLOCK_LANES(block, 1, tr->off_z) - tr->lane_oz;
-  LaneReal cz = RT_BLOCK_LANES(block, 2, tr->off_z) - tr->lane_oz;
-  LaneReal ax = (RT_BLOCK_LANES(block, 0, tr->off_x) - tr->lane_ox) - tr->lane_sx * az;
-  LaneReal ay = (RT_BLOCK_LANES(block, 0, tr->off_y) - tr->lane_oy) - tr->lane_sy * az;
-  LaneReal bx = (RT_BLOCK_LANES(block, 1, tr->off_x) - tr->lane_ox) - tr->lane_sx * bz;
-  LaneReal by = (RT_BLOCK_LANES(block, 1, tr->off_y) - tr->lane_oy) - tr->lane_sy * bz;
-  LaneReal cx = (RT_BLOCK_LANES(block, 2, tr->off_x) - tr->lane_ox) - tr->lane_sx * cz;
-  LaneReal cy = (RT_BLOCK_LANES(block, 2, tr->off_y) - tr->lane_oy) - tr->lane_sy * cz;
+  int best = -1;
+  real best_t = 0.0f, best_v = 0.0f, best_w = 0.0f, best_inv = 0.0f;
+  for (int i = 0; i < RT_BVH_WIDTH; ++i) {
+    real az = RT_BLOCK_LANE(block, 0, tr->off_z, i) - tr->lane_oz;
+    real bz = RT_BLOCK_LANE(block, 1, tr->off_z, i) - tr->lane_oz;
+    real cz = RT_BLOCK_LANE(block, 2, tr->off_z, i) - tr->lane_oz;
+    real ax = (RT_BLOCK_LANE(block, 0, tr->off_x, i) - tr->lane_ox) - tr->lane_sx * az;
+    real ay = (RT_BLOCK_LANE(block, 0, tr->off_y, i) - tr->lane_oy) - tr->lane_sy * az;
+    real bx = (RT_BLOCK_LANE(block, 1, tr->off_x, i) - tr->lane_ox) - tr->lane_sx * bz;
+    real by = (RT_BLOCK_LANE(block, 1, tr->off_y, i) - tr->lane_oy) - tr->lane_sy * bz;
+    real cx = (RT_BLOCK_LANE(block, 2, tr->off_x, i) - tr->lane_ox) - tr->lane_sx * cz;
+    real cy = (RT_BLOCK_LANE(block, 2, tr->off_y, i) - tr->lane_oy) - tr->lane_sy * cz;
+    real u = cx * by - cy * bx;
+    real vv = ax * cy - ay * cx;
+    real w = bx * ay - by * ax;
+    int miss = ((u < 0.0f) | (vv < 0.0f) | (w < 0.0f)) & ((u > 0.0f) | (vv > 0.0f) | (w > 0.0f));
+    real det = u + vv + w;
+    miss |= det == 0.0f;
+    if (cull) miss |= det < 0.0f;
+    if (miss) continue;
+    real tscaled = u * (tr->lane_sz * az) + vv * (tr->lane_sz * bz) + w * (tr->lane_sz * cz);
+    real inv_det = 1.0f / det;
+    real lane_t = tscaled * inv_det;
+    int in_range = any_hit ? lane_t < tmax : lane_t <= tmax;
+    if (!(lane_t > 0.0f) || !in_range || (best >= 0 && !(lane_t < best_t))) continue;
+    best = i;
+    best_t = lane_t;
+    best_v = vv;
+    best_w = w;
+    best_inv = inv_det;
+    if (any_hit) break;
+  }
+  if (best < 0) return -1;
+  *t = best_t;
+  *b1 = best_v * best_inv;
+  *b2 = best_w * best_inv;
+  return best;
+}
+#else
+RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
+                                     RT_PRIVATE const TriangleRay* tr, real tmax, int cull,
+                                     int any_hit, RT_PRIVATE real* t, RT_PRIVATE real* b1,
+                                     RT_PRIVATE real* b2) {
+  LaneReal az = RT_BLOCK_LANES(block, 0, tr->off_z) - RayLaneRead(tr->lane_oz);
+  LaneReal bz = RT_BLOCK_LANES(block, 1, tr->off_z) - RayLaneRead(tr->lane_oz);
+  LaneReal cz = RT_BLOCK_LANES(block, 2, tr->off_z) - RayLaneRead(tr->lane_oz);
+  LaneReal ax = (RT_BLOCK_LANES(block, 0, tr->off_x) - RayLaneRead(tr->lane_ox)) -
+                RayLaneRead(tr->lane_sx) * az;
+  LaneReal ay = (RT_BLOCK_LANES(block, 0, tr->off_y) - RayLaneRead(tr->lane_oy)) -
+                RayLaneRead(tr->lane_sy) * az;
+  LaneReal bx = (RT_BLOCK_LANES(block, 1, tr->off_x) - RayLaneRead(tr->lane_ox)) -
+                RayLaneRead(tr->lane_sx) * bz;
+  LaneReal by = (RT_BLOCK_LANES(block, 1, tr->off_y) - RayLaneRead(tr->lane_oy)) -
+                RayLaneRead(tr->lane_sy) * bz;
+  LaneReal cx = (RT_BLOCK_LANES(block, 2, tr->off_x) - RayLaneRead(tr->lane_ox)) -
+                RayLaneRead(tr->lane_sx) * cz;
+  LaneReal cy = (RT_BLOCK_LANES(block, 2, tr->off_y) - RayLaneRead(tr->lane_oy)) -
+                RayLaneRead(tr->lane_sy) * cz;
   LaneReal u = cx * by - cy * bx;
   LaneReal vv = ax * cy - ay * cx;
   LaneReal w = bx * ay - by * ax;
@@ -142,7 +198,8 @@ RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
   LaneReal det = u + vv + w;
   miss |= det == zero;
   if (cull) miss |= det < zero;
-  LaneReal tscaled = u * (tr->lane_sz * az) + vv * (tr->lane_sz * bz) + w * (tr->lane_sz * cz);
+  LaneReal tscaled = u * (RayLaneRead(tr->lane_sz) * az) + vv * (RayLaneRead(tr->lane_sz) * bz) +
+                     w * (RayLaneRead(tr->lane_sz) * cz);
   LaneReal inv_det = LaneSplat(1.0f) / det;
   LaneReal lane_t = tscaled * inv_det;
   // t > 0 also refuses the lanes whose tscaled has det's opposite sign (or is zero).
@@ -167,6 +224,7 @@ RT_DEVICE int IntersectTriangleBlock(RT_GLOBAL const TriangleBlock* block,
   *b2 = ws[best] * invs[best];
   return best;
 }
+#endif
 
 // Intersects the unit sphere at the origin. The discriminant is formed from the squared
 // distance between the centre and the ray's line (Haines et al., Ray Tracing Gems

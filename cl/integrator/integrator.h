@@ -38,7 +38,7 @@ RT_DEVICE int SurfacePartsRead(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
 RT_DEVICE_INLINE real3 Li(RT_PRIVATE const SceneData* sd, RT_PRIVATE const CameraSample* cs,
                           real2 pixel_uv, RT_PRIVATE PrimaryInfo* info, RT_PRIVATE uint* rays) {
   RT_GLOBAL const SceneHeader* h = sd->header;
-  int max_depth = h->max_depth < RT_MAX_DEPTH ? h->max_depth : RT_MAX_DEPTH;
+  int max_depth = h->max_depth < RT_TREE_DEPTH ? h->max_depth : RT_TREE_DEPTH;
   RayStack stack;
   stack.size = 0;
   // The camera ray is the first task; later ones come from the stack (NextRay).

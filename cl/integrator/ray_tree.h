@@ -13,13 +13,22 @@
 #include "../scene_types.h"
 #include "../util/hash.h"
 
+// The deepest ray tree the integrator follows: the host builds the kernel for its scene's
+// MaxRecursionDepth (-DRT_RAY_TREE_DEPTH, src/device/kernel_config.cpp); the CPU reference
+// and a kernel built without it take the deepest the scene files may ask for.
+#ifdef RT_RAY_TREE_DEPTH
+#define RT_TREE_DEPTH RT_RAY_TREE_DEPTH
+#else
+#define RT_TREE_DEPTH RT_MAX_DEPTH
+#endif
+
 // A ray tree of depth D never holds more than D + 2 pending rays (one sibling per level
 // plus the pair just pushed), which bounds the stack. Only dielectrics branch: a kernel
 // compiled without them needs room for one ray, and less private memory.
 #if defined(__OPENCL_C_VERSION__) && !(RT_KERNEL_FEATURES & RT_FEATURE_DIELECTRIC)
 #define RT_TASK_STACK 2
 #else
-#define RT_TASK_STACK (RT_MAX_DEPTH + 2)
+#define RT_TASK_STACK (RT_TREE_DEPTH + 2)
 #endif
 
 typedef struct RayTask {
@@ -31,10 +40,25 @@ typedef struct RayTask {
   int inside;  // 1 while the ray travels inside a dielectric.
 } RayTask;
 
+#if RT_GPU_FORMS
+// On a GPU the pending rays lie in scratch memory, a work-item's own: a task is kept there
+// without the padding of its three-component vectors (68 bytes in float, not 96).
+typedef struct PackedRayTask {
+  real v[14];  // Origin, direction, tmax, time, weight, medium.
+  uint key;
+  int depth, inside;
+} PackedRayTask;
+
+typedef struct RayStack {
+  PackedRayTask tasks[RT_TASK_STACK];
+  int size;
+} RayStack;
+#else
 typedef struct RayStack {
   RayTask tasks[RT_TASK_STACK];
   int size;
 } RayStack;
+#endif
 
 RT_DEVICE RayTask MakeTask(Ray ray, real3 weight, real3 medium, uint key, int depth, int inside) {
   RayTask task;
@@ -53,12 +77,50 @@ RT_DEVICE RayTask ChildTask(RT_PRIVATE const RayTask* parent, Ray ray, real3 wei
   return MakeTask(ray, weight, medium, HashCombine(parent->key, child), parent->depth + 1, inside);
 }
 
+#if RT_GPU_FORMS
+RT_DEVICE void PushRay(RT_PRIVATE RayStack* stack, RayTask task) {
+  RT_PRIVATE PackedRayTask* p = &stack->tasks[stack->size++];
+  p->v[0] = task.ray.origin.x;
+  p->v[1] = task.ray.origin.y;
+  p->v[2] = task.ray.origin.z;
+  p->v[3] = task.ray.direction.x;
+  p->v[4] = task.ray.direction.y;
+  p->v[5] = task.ray.direction.z;
+  p->v[6] = task.ray.tmax;
+  p->v[7] = task.ray.time;
+  p->v[8] = task.weight.x;
+  p->v[9] = task.weight.y;
+  p->v[10] = task.weight.z;
+  p->v[11] = task.medium.x;
+  p->v[12] = task.medium.y;
+  p->v[13] = task.medium.z;
+  p->key = task.key;
+  p->depth = task.depth;
+  p->inside = task.inside;
+}
+
+RT_DEVICE RayTask PopRay(RT_PRIVATE RayStack* stack) {
+  RT_PRIVATE const PackedRayTask* p = &stack->tasks[--stack->size];
+  RayTask task;
+  task.ray.origin = make_real3(p->v[0], p->v[1], p->v[2]);
+  task.ray.direction = make_real3(p->v[3], p->v[4], p->v[5]);
+  task.ray.tmax = p->v[6];
+  task.ray.time = p->v[7];
+  task.weight = make_real3(p->v[8], p->v[9], p->v[10]);
+  task.medium = make_real3(p->v[11], p->v[12], p->v[13]);
+  task.key = p->key;
+  task.depth = p->depth;
+  task.inside = p->inside;
+  return task;
+}
+#else
 RT_DEVICE void PushRay(RT_PRIVATE RayStack* stack, RayTask task) {
   RT_ASSERT(stack->size < RT_TASK_STACK);
   stack->tasks[stack->size++] = task;
 }
 
 RT_DEVICE RayTask PopRay(RT_PRIVATE RayStack* stack) { return stack->tasks[--stack->size]; }
+#endif
 
 // Pops the next pending ray into *task; 0 when the tree is done.
 RT_DEVICE int NextRay(RT_PRIVATE RayStack* stack, RT_PRIVATE RayTask* task) {

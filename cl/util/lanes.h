@@ -54,4 +54,19 @@ RT_DEVICE LaneReal LaneSplat(real x) {
 #endif
 }
 
+// A ray's value that every lane of a node or triangle-block test reads, kept by the node
+// and triangle rays. On a GPU a vector takes a register per lane for as long as it lives,
+// so the value is kept once and broadcast where a test reads it; elsewhere it is kept
+// broadcast, in one SIMD register, so no test broadcasts it again. The lanes hold the same
+// value either way.
+#if RT_GPU_FORMS
+typedef real RayLane;
+#define RayLaneOf(x) (x)
+#define RayLaneRead(v) LaneSplat(v)
+#else
+typedef LaneReal RayLane;
+#define RayLaneOf(x) LaneSplat(x)
+#define RayLaneRead(v) (v)
+#endif
+
 #endif  // RT_UTIL_LANES_H

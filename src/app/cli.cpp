@@ -210,6 +210,13 @@ OptionTable<CliOptions> make_raytracer_table() {
   t.add_env("RT_CL_OPTIONS",
             "extra OpenCL build options appended to the kernel's (a developer's knob, e.g. "
             "-cl-opt-disable); part of the kernel cache key");
+  t.add_env("RT_CL_BUILD_LOG",
+            "1: print each OpenCL kernel's build log after it builds (with -cl-nv-verbose in "
+            "RT_CL_OPTIONS, NVIDIA's holds ptxas's registers and spills) and the render "
+            "kernel's private and local memory and largest work-group");
+  t.add_env("RT_CL_GPU_FORMS",
+            "1: a CPU OpenCL device compiles the kernel's GPU forms too (a developer's knob, to "
+            "check on a machine without a GPU that they render the same pixels)");
   t.add_env("RT_CPU_ISA",
             "baseline: the CPU reference runs its baseline x86-64 build even where the CPU has "
             "AVX2 (by default the AVX2 build is chosen at run time; the image is the same)");

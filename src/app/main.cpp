@@ -41,6 +41,17 @@ void print_stats(const std::string& out, const rt::RenderDevice& device, const r
       load.cache_hit ? " (cache hit)" : "", load.upload_ms, load.shared_bytes / 1048576.0,
       r.seconds, r.spp, r.samples / r.seconds * 1e-6, r.rays / r.seconds * 1e-6,
       static_cast<unsigned>(flat.header.features));
+  // The kernel's options, so that anyone can compile the same kernel offline
+  // (tests/gpu/gpu_kernels.py reads them): the device's own on OpenCL, else those any
+  // OpenCL device would start from for this camera.
+  if (!load.build_options.empty())
+    std::fprintf(stderr, "stats: %s: kernel build options %s\n", out.c_str(),
+                 load.build_options.c_str());
+  else
+    std::fprintf(stderr, "stats: %s: kernel defines %s\n", out.c_str(),
+                 rt::kernel_defines(static_cast<int>(flat.header.features),
+                                    rt::sized_for_scene(prepared.kernel, flat))
+                     .c_str());
   if (s.desc.degenerate_triangles)
     std::fprintf(stderr, "stats: degenerate triangles skipped: %d\n", s.desc.degenerate_triangles);
 }

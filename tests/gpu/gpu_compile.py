@@ -44,18 +44,19 @@ def find_ptxas():
     return shutil.which("ptxas") or shutil.which("ptxas", path="/usr/local/cuda/bin")
 
 
-def build_options(features, precision):
-    """The -cl-std/-D options of the host's GPU path for this feature set and precision."""
-    o = ["-cl-std=CL1.2", "-DRT_KERNEL_FEATURES=%d" % features, "-DRT_BVH_WIDTH=4"]
+def build_options(features, precision, sizes=()):
+    """The -cl-std/-D options of the host's GPU path for this feature set and precision,
+    with the scene's private-array sizes (`sizes`: -DRT_BVH_STACK=N, -DRT_RAY_TREE_DEPTH=N)."""
+    o = ["-cl-std=CL1.2", "-DRT_KERNEL_FEATURES=%d" % features, "-DRT_BVH_WIDTH=4"] + list(sizes)
     if precision == "double":
         o.append("-DRT_REAL_DOUBLE=1")
     return o
 
 
-def compile_kernel(repo, features, precision, target, out_path):
+def compile_kernel(repo, features, precision, target, out_path, sizes=()):
     """Compiles cl/kernel.cl to assembly (AMD) or PTX at out_path; returns (rc, stderr)."""
     family, flags = TARGETS[target]
-    cmd = [CLANG, "-x", "cl"] + build_options(features, precision) + flags
+    cmd = [CLANG, "-x", "cl"] + build_options(features, precision, sizes) + flags
     cmd += ["-nogpulib", "-Xclang", "-finclude-default-header", "-Xclang",
             "-mlink-builtin-bitcode", "-Xclang", os.path.join(LIBCLC, LIBRARY[family]), "-O3",
             "-Wall", "-Wextra", "-fno-caret-diagnostics", "-fno-color-diagnostics"]

@@ -103,8 +103,14 @@ def all_features(repo):
     return eval(expr)  # Only integer literals and operators, checked above.
 
 
+# The private-array sizes the host derives from a scene (src/device/kernel_config.cpp), as
+# the stats line of its kernel options gives them.
+SIZE_DEFINES = re.compile(r"-DRT_(?:BVH_STACK|RAY_TREE_DEPTH)=\d+")
+
+
 def scene_features(raytracer, scenes, words, work):
-    """The feature set the host compiles for a scene (one value over all its cameras)."""
+    """The feature set the host compiles for a scene and the private-array sizes it
+    defines (-DRT_BVH_STACK, -DRT_RAY_TREE_DEPTH), one value over all its cameras."""
     scene = os.path.join(scenes, words[0])
     if not os.path.isfile(scene):
         return None
@@ -113,12 +119,14 @@ def scene_features(raytracer, scenes, words, work):
                        ["--device", "cpu", "--resolution-scale", "0.02", "--stats", "--quiet",
                         "--output-dir", out], capture_output=True, text=True)
     values = set(re.findall(r"features (0x[0-9a-f]+)", r.stderr))
-    if r.returncode != 0 or not values:
+    sizes = set(" ".join(SIZE_DEFINES.findall(line)) for line in
+                re.findall(r"kernel (?:defines|build options) (.*)", r.stderr))
+    if r.returncode != 0 or not values or not sizes:
         raise InputError("%s: raytracer failed (exit %d):\n%s" % (scene, r.returncode, r.stderr))
-    if len(values) > 1:
+    if len(values) > 1 or len(sizes) > 1:
         raise InputError("%s: cameras need different kernels (%s): name one with --camera N" %
-                         (scene, " ".join(sorted(values))))
-    return int(values.pop(), 16)
+                         (scene, " ".join(sorted(values | sizes))))
+    return int(values.pop(), 16), sizes.pop().split()
 
 
 def measure(job, features, work, use_ptxas):
@@ -126,7 +134,7 @@ def measure(job, features, work, use_ptxas):
     name, precision, target, _ = job
     out = os.path.join(work, "%s.%s.%s.%s" % (name, precision, target,
                                               "s" if gc.TARGETS[target][0] == "amd" else "ptx"))
-    rc, stderr = gc.compile_kernel(REPO, features, precision, target, out)
+    rc, stderr = gc.compile_kernel(REPO, features[0], precision, target, out, features[1])
     result = {"figures": {}, "warnings": gc.warnings_of(stderr, REPO), "errors": []}
     if rc != 0:
         result["errors"].append("compile failed (exit %d):\n%s" % (rc, stderr))
@@ -171,7 +179,7 @@ def print_table(budgets, features, results, ptx_note):
                 cells.append(ptx_note)
             else:
                 cells.append(str(fig[key]) if key in fig else "-")
-        print("| %s | 0x%x | %s | %s | %s |" % (name, features[name], precision, target,
+        print("| %s | 0x%x | %s | %s | %s |" % (name, features[name][0], precision, target,
                                                " | ".join(cells)))
 
 
@@ -236,7 +244,7 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         features = {}
         for name, words in kernels.items():
-            f = all_features(REPO) if words == ["all"] else \
+            f = (all_features(REPO), []) if words == ["all"] else \
                 scene_features(args.raytracer, args.scenes, words, work)
             if f is None:
                 print("SKIP: scene %s of kernel %s is missing (the course scenes belong in %s)"
@@ -248,8 +256,10 @@ def main():
                        for job in budgets}
             results = {k: fut.result() for k, fut in futures.items()}
     print("OpenCL kernel compiled offline by %s with libclc (%s), options -cl-std=CL1.2 "
-          "-DRT_KERNEL_FEATURES=<features> -DRT_BVH_WIDTH=4 [-DRT_REAL_DOUBLE=1]" %
-          (gc.CLANG, gc.LIBCLC))
+          "-DRT_KERNEL_FEATURES=<features> -DRT_BVH_WIDTH=4 [-DRT_REAL_DOUBLE=1] and the "
+          "scene's -DRT_BVH_STACK and -DRT_RAY_TREE_DEPTH:" % (gc.CLANG, gc.LIBCLC))
+    for name, (_, sizes) in features.items():
+        print("  %s: %s" % (name, " ".join(sizes) or "(the kernel's static bounds)"))
     ptx_note = None
     if args.ptxas and not ptxas:
         ptx_note = "no ptxas"

@@ -123,8 +123,9 @@ DeviceLoadInfo ClDevice::load(const FlatScene& flat, const KernelConfig& kernel)
   program_ = nullptr;
   check_memory({array_counts(flat), width_, height_, 0});
   DeviceLoadInfo info;
-  info.build_options =
-      programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features, kernel);
+  // The private arrays sized for this scene (and its depths checked) as the options say.
+  info.build_options = programs_->options_for(generic_ ? RT_FEATURE_ALL : flat.header.features,
+                                              sized_for_scene(kernel, flat));
   ClProgram& p =
       programs_->get(info.build_options, kernel.bvh_width, &info.compile_ms, &info.cache_hit);
   auto since = [](std::chrono::steady_clock::time_point t) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cinttypes>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -70,12 +71,13 @@ void check_precision_support(const std::string& device_name, bool has_fp64, bool
 
 std::string ClProgramCache::options_for(int features, const KernelConfig& kernel) const {
   check_precision_support(name_, fp64_, kernel.double_precision);
-  std::string o = "-cl-std=CL1.2 -DRT_KERNEL_FEATURES=" + std::to_string(features);
-  // The width of the nodes and triangle blocks the host built (cl/bvh/simd.h, src/bvh/bvh_lanes.h).
-  o += " -DRT_BVH_WIDTH=" + std::to_string(kernel.bvh_width);
-  if (kernel.double_precision) o += " -DRT_REAL_DOUBLE=1";
-  // Code whose best form differs between a CPU and a GPU asks which it runs on (cl/integrator/pixel.h).
-  if (cpu_) o += " -DRT_CL_CPU_DEVICE=1";
+  std::string o = kernel_defines(features, kernel);
+  // Code whose best form differs between a CPU and a GPU asks which it runs on
+  // (cl/integrator/pixel.h). RT_CL_GPU_FORMS=1, a developer's knob: a CPU device compiles the GPU
+  // forms too (cl/compat.h), so that a machine without a GPU checks that they render the same
+  // pixels.
+  const char* gpu_forms = std::getenv("RT_CL_GPU_FORMS");
+  if (cpu_ && !(gpu_forms && *gpu_forms && *gpu_forms != '0')) o += " -DRT_CL_CPU_DEVICE=1";
   if (correctly_rounded_) o += " -cl-fp32-correctly-rounded-divide-sqrt";
   // A developer's knob for experiments (e.g. RT_CL_OPTIONS=-cl-fast-relaxed-math).
   if (const char* extra = std::getenv("RT_CL_OPTIONS")) o += std::string(" ") + extra;
@@ -153,6 +155,22 @@ cl::Program ClProgramCache::build(const std::string& source, const std::string& 
   return p;
 }
 
+void ClProgramCache::print_build_report(const ClProgram& p, const std::string& options) const {
+  // With -cl-nv-verbose (RT_CL_OPTIONS) NVIDIA's log holds ptxas's registers and spills.
+  std::string log = clean_cl_string(p.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_));
+  std::fprintf(stderr, "OpenCL build log for %s (options: %s):\n%s\n", name_.c_str(),
+               options.c_str(), log.empty() ? "(empty)" : log.c_str());
+  std::fprintf(
+      stderr,
+      "OpenCL kernel render on %s: private %llu B, local %llu B, work-group at most "
+      "%zu\n",
+      name_.c_str(),
+      static_cast<unsigned long long>(
+          p.kernel.getWorkGroupInfo<CL_KERNEL_PRIVATE_MEM_SIZE>(device_)),
+      static_cast<unsigned long long>(p.kernel.getWorkGroupInfo<CL_KERNEL_LOCAL_MEM_SIZE>(device_)),
+      static_cast<size_t>(p.kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device_)));
+}
+
 ClProgram& ClProgramCache::get(const std::string& options, int bvh_width, double* compile_ms,
                                bool* cache_hit) {
   auto it = programs_.find(options);
@@ -181,6 +199,8 @@ ClProgram& ClProgramCache::get(const std::string& options, int bvh_width, double
     }
     // Host and device must agree on every struct before anything is uploaded.
     check_scene_layout(context_, queue_, p.program, name_, bvh_width);
+    if (const char* log = std::getenv("RT_CL_BUILD_LOG"); log && *log && *log != '0')
+      print_build_report(p, options);
   } catch (const cl::Error& e) {
     throw std::runtime_error("OpenCL: " + describe_cl_error(e) + " on " + name_);
   }

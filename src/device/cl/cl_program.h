@@ -23,12 +23,12 @@ struct ClProgram {
 class ClProgramCache {
  public:
   ClProgramCache(const cl::Context& context, const cl::Device& device, bool use_disk_cache);
-  // The build options for a feature set: the defines (the scene's node width among them),
-  // exact division and square root when the device offers them, RT_CL_CPU_DEVICE on a CPU
-  // device, the kernel configuration's fast math, node width and RT_REAL_DOUBLE for double
-  // precision (which throws, naming the device, when it lacks cl_khr_fp64), and
-  // RT_CL_OPTIONS (a developer's knob). The options key both the in-memory and the on-disk
-  // cache.
+  // The build options for a feature set: kernel_defines (the scene's node width, BVH stack
+  // and ray-tree depth among them), exact division and square root when the device offers them,
+  // RT_CL_CPU_DEVICE on a CPU device, the kernel configuration's fast math, node width and
+  // RT_REAL_DOUBLE for double precision (which throws, naming the device, when it lacks
+  // cl_khr_fp64), and RT_CL_OPTIONS (a developer's knob). The options key both the in-memory and
+  // the on-disk cache.
   std::string options_for(int features, const KernelConfig& kernel) const;
   // The program built with `options`, whose node width is `bvh_width`. *compile_ms is the
   // time it took (0 when it was in memory), *cache_hit whether it came from memory or the
@@ -38,6 +38,9 @@ class ClProgramCache {
   bool is_cpu() const { return cpu_; }
 
  private:
+  // RT_CL_BUILD_LOG set (not 0): the build log of a built program and its render kernel's
+  // private and local memory and largest work-group, on stderr.
+  void print_build_report(const ClProgram& p, const std::string& options) const;
   cl::Program build(const std::string& source, const std::string& options, bool* hit);
 
   cl::Context context_;

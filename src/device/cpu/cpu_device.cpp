@@ -27,6 +27,8 @@ DeviceLoadInfo CpuDevice::load(const FlatScene& flat, const KernelConfig& kernel
                              "-wide BVH nodes, but the CPU "
                              "reference is compiled for " +
                              std::to_string(RT_BVH_WIDTH));
+  // The traversal's stack is the static bound; sized_for_scene refuses deeper trees.
+  sized_for_scene(kernel, flat);
   flat_ = &flat;
   accumulate_ = select_cpu_kernel(kernel.double_precision).accumulate;
   view_ = flat.view();
