@@ -77,14 +77,16 @@ RT_DEVICE real3 SampleUniformHemisphere(real3 n, real2 u) {
 // course's references show: sampling the glass's Phong lobe in proportion to it
 // (BrdfSample) leaves 9.4 % black pixels in glass_importance against the reference's
 // 10.4 %, which moves its tone mapping.
+// Its density for a direction at cosine cos_i to the normal (BsdfPdf's, SampleBsdf's).
+RT_DEVICE real ReflectionDirectionPdf(real cos_i, int importance) {
+  if (!importance) return 1.0f / (2.0f * RT_PI);
+  return fmax(RT_R(0.0), cos_i) * (1.0f / RT_PI);
+}
+
 RT_DEVICE real3 SampleReflectionDirection(RT_PRIVATE const SurfacePoint* s, real2 u, int importance,
                                           RT_PRIVATE real* pdf) {
-  if (!importance) {
-    *pdf = 1.0f / (2.0f * RT_PI);
-    return SampleUniformHemisphere(s->n, u);
-  }
-  real3 wi = SampleCosineLobe(s->n, 1.0f, u);
-  *pdf = fmax(RT_R(0.0), Dot(wi, s->n)) * (1.0f / RT_PI);
+  real3 wi = importance ? SampleCosineLobe(s->n, 1.0f, u) : SampleUniformHemisphere(s->n, u);
+  *pdf = ReflectionDirectionPdf(Dot(wi, s->n), importance);
   return wi;
 }
 
