@@ -87,11 +87,12 @@ Reference ConvergedReference(const std::string& scene_path, rt::SceneDesc& scene
   stat(scene_path.c_str(), &st);
   const int flags = c.path_flags >= 0 ? c.path_flags : cam.path_flags;
   char key[512];
-  std::snprintf(key, sizeof key, "%s|%lld|%lld|cam %d|%dx%d|spp %d|seed %u|path %d|unbiased %d|%s",
-                std::filesystem::absolute(scene_path).c_str(), static_cast<long long>(st.st_size),
-                static_cast<long long>(st.st_mtime), camera, cam.width, cam.height, c.opt.spp,
-                c.opt.seed, cam.path_tracing ? flags : -1, c.opt.unbiased_roulette ? 1 : 0,
-                c.opt.precision == rt::Precision::kDouble ? "double" : "float");
+  std::snprintf(
+      key, sizeof key, "%s|%lld|%lld|cam %d|%dx%d|spp %d|seed %u|path %d|unbiased %d|%s%s",
+      std::filesystem::absolute(scene_path).c_str(), static_cast<long long>(st.st_size),
+      static_cast<long long>(st.st_mtime), camera, cam.width, cam.height, c.opt.spp, c.opt.seed,
+      cam.path_tracing ? flags : -1, c.opt.unbiased_roulette ? 1 : 0,
+      c.opt.precision == rt::Precision::kDouble ? "double" : "float", c.opt.mis ? "|mis" : "");
   char name[64];
   std::snprintf(name, sizeof name, "-%016zx.moments.exr", std::hash<std::string>()(key));
   const std::string path =

@@ -207,6 +207,9 @@ typedef struct TriangleNormals {
 // --hit-point ray: the surface point is the ray's origin + t * direction, as the course's
 // renderer forms it, not rebuilt from the primitive (cl/geometry/surface.h).
 #define RT_FLAG_RAY_HIT_POINT 8192
+// --path-estimator mis: the path tracer weighs light samples against BSDF samples (power
+// heuristic), plays pbrt-v4's roulette and follows one lobe per bounce (cl/integrator/path.h).
+#define RT_FLAG_MIS 16384
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \

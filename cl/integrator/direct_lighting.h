@@ -7,6 +7,7 @@
 #include "../geometry/surface.h"
 #include "../light/light.h"
 #include "../material/material.h"
+#include "mis.h"
 
 // 1 when nothing lies between origin and origin + segment (exclusive).
 RT_DEVICE int Unoccluded(RT_PRIVATE const SceneData* sd, real3 origin, real3 segment, real time,
@@ -36,16 +37,22 @@ RT_DEVICE real3 ShadeLightSample(RT_PRIVATE const SceneData* sd, RT_PRIVATE cons
 // Light), which fixes the last bit of the result. `rs` draws the area lights'
 // samples; it comes by pointer, as to RaySample2D (a by-value copy, stored field by field by
 // the caller and reloaded in 16-byte halves here, stalled on store-to-load forwarding). The
-// path tracer's next-event estimation is this sum.
+// path tracer's next-event estimation is this sum; with `mis` each sample is weighed
+// against the path's bounce, drawn with `importance` (mis.h).
 RT_DEVICE real3 AddLightSamples(RT_PRIVATE const SceneData* sd, RT_PRIVATE const SurfacePoint* s,
                                 RT_PRIVATE const Material* m, RT_PRIVATE const RaySampler* rs,
-                                real3 l, RT_PRIVATE uint* rays) {
+                                real3 l, int mis, int importance, RT_PRIVATE uint* rays) {
   LightSampleContext ctx = MakeLightSampleContext(s->p, s->n, s->ng);
   // Summed per component, in the same order as l += c: the CPU reference receives l in two
   // registers, and reassembling it whole went through memory (a store-forwarding stall).
   real x = l.x, y = l.y, z = l.z;
   for (int i = 0; i < sd->header->num_lights; ++i) {
-    real3 c = ShadeLightSample(sd, s, m, SampleLight(sd, &sd->lights[i], &ctx, rs), rays);
+    RT_GLOBAL const Light* light = &sd->lights[i];
+    LightSample ls = SampleLight(sd, light, &ctx, rs);
+    real w = mis ? LightSampleWeight(sd, light, ls, s, m, importance) : 1.0f;
+    if (!(w > 0.0f)) continue;  // No shadow ray for a sample of weight 0.
+    real3 c = ShadeLightSample(sd, s, m, ls, rays);
+    if (mis) c = c * w;
     x += c.x;
     y += c.y;
     z += c.z;
@@ -73,7 +80,7 @@ RT_DEVICE real3 DirectLighting(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
   if (sd->header->num_lights == 0) return ambient;
   int blinn_phong = !RT_HAS(sd, RT_FEATURE_BRDF) || m->brdf == RT_BRDF_ORIGINAL_BLINN_PHONG;
   if (blinn_phong && BlinnPhongIsBlack(m)) return ambient;
-  return AddLightSamples(sd, s, m, &rs, ambient, rays);
+  return AddLightSamples(sd, s, m, &rs, ambient, 0, 0, rays);
 }
 
 #endif  // RT_INTEGRATOR_DIRECT_LIGHTING_H

@@ -25,6 +25,13 @@
 // references show (glass_next.exr is 5.0 % brighter than glass.exr: the share of the
 // fourth bounce). RussianRoulette replaces the bound, as the course's references do
 // ("only the direct application of Russian roulette"); see RouletteSurvives.
+//
+// --path-estimator mis (RT_FLAG_MIS) changes three of these conventions: with next-event
+// estimation, emission and the environment that a non-specular bounce finds count too,
+// weighed against the light samples by multiple importance sampling (mis.h); the bounce
+// from the last vertex is still traced, to collect the emission it finds (as Cycles'
+// last bounce), so that both strategies reach the same MaxRecursionDepth + 1 scatterings;
+// and a path follows one lobe per vertex, with pbrt-v4's unbiased roulette.
 #ifndef RT_INTEGRATOR_PATH_H
 #define RT_INTEGRATOR_PATH_H
 
@@ -36,6 +43,7 @@
 #include "../sampling/dimensions.h"
 #include "direct_lighting.h"
 #include "escaped.h"
+#include "mis.h"
 #include "primary_info.h"
 
 #if RT_COMPILED(RT_FEATURE_PATH_TRACING)
@@ -62,6 +70,11 @@ typedef struct PathState {
   int bounce;      // Scatterings so far.
   int inside;      // 1 while inside a dielectric.
   int specular;    // The last scattering was a delta lobe (the camera ray counts as one).
+  // Multiple importance sampling: the vertex the ray left, its unit shading normal, and the
+  // density with which the bounce drew the ray's direction (BsdfPdf).
+  real3 from;
+  real3 from_n;
+  real pdf;
 } PathState;
 
 // Radiance the surface at s emits back along s->wo: object lights (LightMesh,
@@ -116,27 +129,30 @@ RT_DEVICE PathState BranchPath(RT_PRIVATE const SceneData* sd, RT_PRIVATE const 
 
 // The radiance an escaping path sees. With next-event estimation the environment light
 // was sampled at the hit before, unless the path left by a delta lobe (as for emission at
-// hits).
+// hits): the course's estimator drops it, mis weighs it against that sample.
 RT_DEVICE real3 PathEscapedRadiance(RT_PRIVATE const SceneData* sd, RT_PRIVATE const PathState* p,
-                                    real2 pixel_uv, int nee) {
+                                    real2 pixel_uv, int nee, int mis) {
   int sampled =
       nee && !p->specular && RT_HAS(sd, RT_LIGHT_ENVIRONMENT) && sd->header->environment >= 0;
-  if (!EscapedRaySees(sd, p->bounce) || sampled) return Vec3(0.0f);
-  return p->weight * EscapedRadiance(sd, p->ray.direction, pixel_uv);
+  if (!EscapedRaySees(sd, p->bounce) || (sampled && !mis)) return Vec3(0.0f);
+  real3 l = p->weight * EscapedRadiance(sd, p->ray.direction, pixel_uv);
+  if (sampled) l = l * EnvironmentWeight(sd, p->ray.direction, p->from_n, p->pdf);
+  return l;
 }
 
 // Continuation: replaces *p by the path along one lobe of the material at s and pushes the
 // other lobes' branches; returns whether *p goes on. The path splits into every lobe while
-// the stack has room for the extra branches, else follows one lobe, chosen at random; with
-// --dielectric choose a dielectric never splits (one lobe, Fresnel picking between its
-// reflected and refracted rays).
+// the stack has room for the extra branches, else (or with `choose`: the mis estimator)
+// follows one lobe, chosen at random; with --dielectric choose a dielectric never splits
+// either (one lobe, Fresnel picking between its reflected and refracted rays).
 RT_KERNEL_INLINE int ContinuePath(RT_PRIVATE const SceneData* sd, RT_PRIVATE PathState* p,
                                   RT_PRIVATE const SurfacePoint* s, RT_PRIVATE const Material* m,
-                                  RaySampler rs, int importance, RT_PRIVATE PathState* stack,
-                                  RT_PRIVATE int* pending) {
+                                  RaySampler rs, int importance, int choose,
+                                  RT_PRIVATE PathState* stack, RT_PRIVATE int* pending) {
   BsdfSample lobes[RT_LOBE_COUNT];
   int n = 0;
-  int choose = (sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0 && IsTransmissive(sd, m);
+  choose = choose ||
+           ((sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0 && IsTransmissive(sd, m));
   if (RT_PATH_STACK > 1 && !choose && HasSpecularLobe(sd, m))
     n = SampleBsdfLobes(sd, m, s, rs, importance, lobes);
   if (n == 0 || *pending + n - 1 > RT_PATH_STACK) {
@@ -156,8 +172,11 @@ RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_
   int nee = (flags & RT_FLAG_NEXT_EVENT) != 0;
   int importance = (flags & RT_FLAG_IMPORTANCE_SAMPLING) != 0;
   int roulette = (flags & RT_FLAG_RUSSIAN_ROULETTE) != 0;
-  int course_roulette = roulette && (flags & RT_FLAG_UNBIASED_ROULETTE) == 0;
+  int mis = (flags & RT_FLAG_MIS) != 0;
+  int course_roulette = roulette && (flags & RT_FLAG_UNBIASED_ROULETTE) == 0 && !mis;
   int max_bounces = roulette ? RT_MAX_PATH_BOUNCES : h->max_depth;
+  // mis with light samples traces one bounce past the last light sample, for its emission.
+  int last_bounce = max_bounces + (mis && nee);
   real3 radiance = Vec3(0.0f);
   PathState stack[RT_PATH_STACK];
   int pending = 0;
@@ -170,6 +189,9 @@ RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_
   p.bounce = 0;
   p.inside = 0;
   p.specular = 1;
+  p.from = camera_ray.origin;
+  p.from_n = Vec3(0.0f);
+  p.pdf = 0.0f;
   RecordPrimaryMiss(info);
   for (;;) {
     Hit hit;
@@ -177,7 +199,7 @@ RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_
     int cull = (flags & RT_FLAG_CULL_BACK_FACES) != 0 && p.bounce == 0;
     int continues = 0;  // Whether p goes on from this hit.
     if (!IntersectClosest(sd, p.ray, cull, &hit)) {
-      radiance += PathEscapedRadiance(sd, &p, pixel_uv, nee);
+      radiance += PathEscapedRadiance(sd, &p, pixel_uv, nee, mis);
     } else {
       SurfacePoint s = ComputeSurface(sd, p.ray, hit);
       if (p.bounce == 0) RecordPrimaryHit(info, hit, s.n);
@@ -187,26 +209,37 @@ RT_DEVICE real3 PathLi(RT_PRIVATE const SceneData* sd, SampleKey sk, Ray camera_
       // Emission: what the surface sends along the path, where light sampling did not count
       // it already; a replace_all texture shows its colour, unshaded, and ends the path.
       real3 found = (!nee || p.specular) ? SurfaceEmission(sd, &s) : Vec3(0.0f);
+      if (mis && nee && !p.specular) {
+        found = SurfaceEmission(sd, &s);
+        if (MaxComponent(found) > 0.0f) found = found * EmissionWeight(sd, p.from, p.pdf, &s);
+      }
       int unlit = RT_HAS(sd, RT_FEATURE_TEXTURES) && m.unlit;
       if (unlit) found = found + ToReal3(m.diffuse);
       // Unlike the ray tree's direct lighting, the path sees every surface from the side it
       // arrives on, so light samples and continuations agree on which side is lit.
       FaceForward(&s);
       RaySampler rs = MakeRaySampler(sk, p.key, p.bounce == 0);
-      // Light samples: next-event estimation through the reflection model.
-      if (!unlit && nee && ReflectionShare(sd, &m, &s) > 0.0f)
-        found = AddLightSamples(sd, &s, &m, &rs, found, rays);
+      // Light samples: next-event estimation through the reflection model (none at the
+      // vertex past the last bounce, which only collects emission).
+      int beyond = p.bounce > max_bounces;
+      if (!unlit && nee && !beyond && ReflectionShare(sd, &m, &s) > 0.0f)
+        found = AddLightSamples(sd, &s, &m, &rs, found, mis, importance, rays);
       // Survival: the bound on bounces, then the roulette, played once; the course's divides
       // this hit's light by its probability too, pbrt-v4's only what the path finds later.
       real survival = 1.0f;
-      continues = !unlit && p.bounce < max_bounces;
+      continues = !unlit && p.bounce < last_bounce;
       if (continues && roulette)
         continues = RouletteSurvives(course_roulette ? p.roulette : p.weight, rs, &survival);
       if (course_roulette) p.weight = p.weight * survival;
       radiance += p.weight * found;
       if (roulette && !course_roulette) p.weight = p.weight * survival;
       // Continuation along the material's lobes.
-      if (continues) continues = ContinuePath(sd, &p, &s, &m, rs, importance, stack, &pending);
+      if (continues) continues = ContinuePath(sd, &p, &s, &m, rs, importance, mis, stack, &pending);
+      if (continues && mis) {
+        p.from = s.p;
+        p.from_n = s.n;
+        p.pdf = p.specular ? 0.0f : BsdfPdf(sd, &m, &s, p.ray.direction, importance);
+      }
     }
     if (continues) continue;
     if (pending == 0) break;

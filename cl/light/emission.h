@@ -28,7 +28,7 @@ RT_DEVICE real3 EmittedRadiance(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
 // the object light s lies on; 0 for a point it never picks (another object, a face turned
 // away from p). s must not be face-forwarded yet. It is the emitter's side of multiple
 // importance sampling (weighing a BSDF-sampled hit of a light against light sampling,
-// LightSample.pdf); no integrator weighs samples yet, the tests check it against sampling.
+// LightSample.pdf; cl/integrator/mis.h); the tests check it against sampling.
 RT_DEVICE real EmitterPdf(RT_PRIVATE const SceneData* sd, real3 p,
                           RT_PRIVATE const SurfacePoint* s) {
   int l = HitLightIndex(sd, s->hit);

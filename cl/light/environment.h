@@ -59,11 +59,22 @@ RT_DEVICE real3 SampleHemisphere(real3 n, real2 u, int cosine, RT_PRIVATE real* 
   return SphericalDirection(n, r, z, u.y);
 }
 
+// The solid-angle density with which SampleEnvironmentLight, at a point of unit shading
+// normal n, draws unit direction d, whichever the light's sampler.
+RT_DEVICE real EnvironmentSamplePdf(RT_PRIVATE const SceneData* sd, RT_GLOBAL const Light* light,
+                                    real3 d, real3 n) {
+  if (RT_ENV_SAMPLING(light) == RT_ENV_SAMPLE_IMPORTANCE) return EnvironmentPdf(sd, light, d);
+  real cos_t = Dot(d, n);
+  if (!(cos_t > 0.0f)) return 0.0f;
+  return RT_ENV_SAMPLING(light) == RT_ENV_SAMPLE_COSINE ? cos_t * (1.0f / RT_PI) : 0.5f / RT_PI;
+}
+
 RT_DEVICE LightSample SampleEnvironmentLight(RT_PRIVATE const SceneData* sd,
                                              RT_GLOBAL const Light* light,
                                              RT_PRIVATE const LightSampleContext* ctx, real2 u) {
   LightSample ls;
   ls.valid = 0;
+  ls.pdf = 0.0f;
   ls.irradiance = Vec3(0.0f);
   ls.wi = ctx->n;
   ls.p_light = ctx->p;
@@ -91,6 +102,7 @@ RT_DEVICE LightSample SampleEnvironmentLight(RT_PRIVATE const SceneData* sd,
   // The shadow segment leaves the scene's bounding box, as a directional light's.
   ls.p_light = ctx->p + ls.wi * RT_LIGHT_REACH(light);
   ls.irradiance = radiance * (1.0f / pdf);
+  ls.pdf = pdf;
   ls.valid = 1;
   return ls;
 }

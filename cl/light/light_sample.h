@@ -30,8 +30,9 @@ typedef struct LightSample {
   real3 irradiance;
   // Density of wi per unit solid angle, the light's side of multiple importance sampling
   // (weighing a light sample against the BSDF's sampling of the same direction, with
-  // EmitterPdf for the other side); no integrator weighs samples yet. 0 for the lights
-  // that sample a single direction (point, spot, directional), which a ray never finds.
+  // EmitterPdf and EnvironmentSamplePdf for the other side; cl/integrator/mis.h). 0 for the
+  // lights that sample a single direction (point, spot, directional), which a ray never
+  // finds.
   real pdf;
   int valid;  // 0 when the light sends nothing (the shading point lies on the light).
 } LightSample;

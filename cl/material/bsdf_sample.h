@@ -71,6 +71,13 @@ RT_DEVICE real3 SampleUniformHemisphere(real3 n, real2 u) {
   return SphericalDirection(n, sin_t, cos_t, u.y);
 }
 
+// The density of SampleReflectionDirection for a direction at cosine cos_i to the normal:
+// uniform over the hemisphere, or cosine-weighted with `importance` (BsdfPdf's too).
+RT_DEVICE real ReflectionDirectionPdf(real cos_i, int importance) {
+  if (!importance) return 1.0f / (2.0f * RT_PI);
+  return fmax(RT_R(0.0), cos_i) * (1.0f / RT_PI);
+}
+
 // A direction for the reflection model at s (whose normals face s->wo) and its
 // solid-angle density: uniform over the hemisphere, or cosine-weighted with `importance`,
 // as the specification asks ("cosine based sampling of the upper hemisphere") and the
@@ -79,12 +86,8 @@ RT_DEVICE real3 SampleUniformHemisphere(real3 n, real2 u) {
 // 10.4 %, which moves its tone mapping.
 RT_DEVICE real3 SampleReflectionDirection(RT_PRIVATE const SurfacePoint* s, real2 u, int importance,
                                           RT_PRIVATE real* pdf) {
-  if (!importance) {
-    *pdf = 1.0f / (2.0f * RT_PI);
-    return SampleUniformHemisphere(s->n, u);
-  }
-  real3 wi = SampleCosineLobe(s->n, 1.0f, u);
-  *pdf = fmax(RT_R(0.0), Dot(wi, s->n)) * (1.0f / RT_PI);
+  real3 wi = importance ? SampleCosineLobe(s->n, 1.0f, u) : SampleUniformHemisphere(s->n, u);
+  *pdf = ReflectionDirectionPdf(Dot(wi, s->n), importance);
   return wi;
 }
 

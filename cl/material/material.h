@@ -152,4 +152,17 @@ RT_DEVICE BsdfSample SampleBsdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const
   return bs;
 }
 
+// The solid-angle density with which SampleBsdf draws the direction wi at s (normals facing
+// s->wo): the reflection model's density (ReflectionDirectionPdf) times the probability of
+// choosing it; none below the geometric surface, which SampleReflectionLobe never returns,
+// and none from the delta lobes, which hit wi with probability 0. The path tracer's
+// multiple importance sampling weighs light samples and bounces by it (cl/integrator/mis.h).
+RT_DEVICE real BsdfPdf(RT_PRIVATE const SceneData* sd, RT_PRIVATE const Material* m,
+                       RT_PRIVATE const SurfacePoint* s, real3 wi, int importance) {
+  real share = ReflectionShare(sd, m, s);
+  real cos_i = Dot(wi, s->n);
+  if (!(share > 0.0f) || !(cos_i > 0.0f) || Dot(wi, s->ng) <= 0.0f) return 0.0f;
+  return share * ReflectionDirectionPdf(cos_i, importance);
+}
+
 #endif  // RT_MATERIAL_H

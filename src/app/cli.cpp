@@ -39,6 +39,16 @@ OptionTable<RenderOptions> make_device_table() {
               "path tracing with RussianRoulette: course (as its reference images: a path the "
               "roulette ends keeps its last hit's light undivided, which brightens the image); "
               "unbiased: pbrt-v4's (survival from the path's weight)")
+      .choice("--path-estimator",
+              std::vector<std::pair<std::string, bool>>{{"course", false}, {"mis", true}},
+              RT_FIELD(mis),
+              "path tracing: course (as its reference images: with NextEventEstimation, "
+              "emission a bounce finds is dropped, and a path splits at glass); mis: light "
+              "samples and bounces both count light, weighed by multiple importance sampling "
+              "(power heuristic), without the fireflies of light samples near a light; for "
+              "path-traced cameras it implies --russian-roulette unbiased, --dielectric choose "
+              "and --ellipsoid-lights exact, and the bounce after the last light sample still "
+              "finds emission (docs/path_tracing.md)")
       .choice("--ellipsoid-lights",
               std::vector<std::pair<std::string, bool>>{{"course", false}, {"exact", true}},
               RT_FIELD(exact_ellipsoid_lights),

@@ -35,6 +35,7 @@ struct RenderOptions {
   bool use_scene_epsilon = true;        // Off: rely on the scale-aware offset alone.
   bool fresnel_choice = false;          // Dielectrics: pick one ray by Fresnel instead of both.
   bool unbiased_roulette = false;       // Path tracing: RussianRoulette without the course's bias.
+  bool mis = false;                     // Path tracing: --path-estimator mis (RT_FLAG_MIS).
   bool exact_ellipsoid_lights = false;  // Not the course's object-space solid angle.
   bool facing_reflection = false;       // Not the course's reflection offset (mirror.h).
   bool robust_offset = false;      // Spawned rays: scene epsilon plus ulps (cl/geometry/ray.h).

@@ -89,6 +89,8 @@ void set_header(SceneHeader& h, const SceneDesc& scene, const CameraDesc& c,
             (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0) |
             (options.ray_hit_point ? RT_FLAG_RAY_HIT_POINT : 0) |
             (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0) |
+            // The weights need the light samples' true densities: exact ellipsoid lights.
+            (c.path_tracing && options.mis ? RT_FLAG_MIS | RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
             (course_camera ? RT_FLAG_COURSE_CAMERA : 0);
 }
 
