@@ -151,8 +151,7 @@ RT_KERNEL_INLINE int ContinuePath(RT_PRIVATE const SceneData* sd, RT_PRIVATE Pat
                                   RT_PRIVATE PathState* stack, RT_PRIVATE int* pending) {
   BsdfSample lobes[RT_LOBE_COUNT];
   int n = 0;
-  choose = choose ||
-           ((sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0 && IsTransmissive(sd, m));
+  choose = choose || ((sd->header->flags & RT_FLAG_FRESNEL_CHOICE) != 0 && IsTransmissive(sd, m));
   if (RT_PATH_STACK > 1 && !choose && HasSpecularLobe(sd, m))
     n = SampleBsdfLobes(sd, m, s, rs, importance, lobes);
   if (n == 0 || *pending + n - 1 > RT_PATH_STACK) {

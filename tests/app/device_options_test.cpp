@@ -63,6 +63,7 @@ const std::vector<Case>& Cases() {
       {"tree", "", "--dielectric choose"},
       {"path", "", "--dielectric choose"},
       {"path", "", "--russian-roulette unbiased"},
+      {"path", "", "--path-estimator mis"},
       {"tree", "", "--ellipsoid-lights exact"},
       {"tree", "", "--cull-back-faces"},
       {"tree", "", "--background-on-secondary-miss"},
