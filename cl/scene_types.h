@@ -207,6 +207,9 @@ typedef struct TriangleNormals {
 // --hit-point ray: the surface point is the ray's origin + t * direction, as the course's
 // renderer forms it, not rebuilt from the primitive (cl/geometry/surface.h).
 #define RT_FLAG_RAY_HIT_POINT 8192
+// --sampler sobol: every random dimension is an Owen-scrambled Sobol point (cl/sampling/sobol.h)
+// instead of a hash with jittered strata on the camera's (cl/sampling/sampler.h).
+#define RT_FLAG_SOBOL_SAMPLER 32768
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \

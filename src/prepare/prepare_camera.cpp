@@ -66,6 +66,12 @@ void set_camera(Camera& cam, const CameraDesc& c, Vec3d origin, const RenderOpti
   cam.strata = root * root == cam.samples ? root : 0;
 }
 
+// Whether camera `c` draws its numbers from the scrambled Sobol sequence (RT_FLAG_SOBOL_SAMPLER):
+// --sampler sobol; auto keeps the independent sampler, whose images every existing render made.
+bool sobol_sampler(const RenderOptions& options, const CameraDesc& /*c*/) {
+  return options.sampler == SamplerChoice::kSobol;
+}
+
 // The header's settings from the scene, the options and the camera (set_camera's).
 void set_header(SceneHeader& h, const SceneDesc& scene, const CameraDesc& c,
                 const RenderOptions& options) {
@@ -89,7 +95,8 @@ void set_header(SceneHeader& h, const SceneDesc& scene, const CameraDesc& c,
             (options.geometric_offset ? RT_FLAG_GEOMETRIC_OFFSET : 0) |
             (options.ray_hit_point ? RT_FLAG_RAY_HIT_POINT : 0) |
             (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0) |
-            (course_camera ? RT_FLAG_COURSE_CAMERA : 0);
+            (course_camera ? RT_FLAG_COURSE_CAMERA : 0) |
+            (sobol_sampler(options, c) ? RT_FLAG_SOBOL_SAMPLER : 0);
 }
 
 // The feature bits (cl/features.h) of what `f` holds: its placed instances, their
