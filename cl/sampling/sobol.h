@@ -44,12 +44,19 @@ RT_DEVICE uint NestedUniformScramble(uint x, uint key) {
 RT_DEVICE uint SobolFirst(uint index) { return ReverseBits(index); }
 
 // Sobol's second dimension with its bits reversed: the XOR of the direction numbers of the
-// index's set bits, direction j being row j of Pascal's triangle mod 2 (primitive polynomial
-// x + 1), reversed: w_0 = 1, w_j = w_(j-1) ^ (w_(j-1) << 1).
+// index's set bits, direction k being row k of Pascal's triangle mod 2 (primitive polynomial
+// x + 1), reversed: w_0 = 1, w_k = w_(k-1) ^ (w_(k-1) << 1). By Lucas's theorem bit j of w_k is
+// set exactly when the bits of j are among those of k, so bit j of the sum is the parity of
+// the index's bits k that are supersets of j: five steps of a superset transform over the bit
+// positions, each folding the positions with one position bit set onto those without it (the
+// same values as the 32-step sum, tests/sampling/sobol_test.cpp).
 RT_DEVICE uint SobolSecondReversed(uint index) {
-  uint r = 0u, w = 1u;
-  for (; index != 0u; index >>= 1, w ^= w << 1) r ^= w & (0u - (index & 1u));
-  return r;
+  uint r = index;
+  r ^= (r >> 1) & 0x55555555u;
+  r ^= (r >> 2) & 0x33333333u;
+  r ^= (r >> 4) & 0x0f0f0f0fu;
+  r ^= (r >> 8) & 0x00ff00ffu;
+  return r ^ (r >> 16);
 }
 
 RT_DEVICE uint SobolSecond(uint index) { return ReverseBits(SobolSecondReversed(index)); }

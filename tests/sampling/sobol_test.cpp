@@ -58,6 +58,21 @@ TEST(Sobol, FirstPointsAreSobolsFirstTwoDimensions) {
   EXPECT_EQ(ReverseBits(0x12345678u), 0x1e6a2c48u);
 }
 
+// SobolSecondReversed's five folds against the plain sum of the direction numbers,
+// w_0 = 1, w_k = w_(k-1) ^ (w_(k-1) << 1), over every bit alone and a spread of indices.
+TEST(Sobol, SecondDimensionIsTheSumOfItsDirectionNumbers) {
+  auto plain = [](uint index) {
+    uint r = 0u, w = 1u;
+    for (int k = 0; k < 32; ++k, w ^= w << 1)
+      if ((index >> k) & 1u) r ^= w;
+    return r;
+  };
+  for (int k = 0; k < 32; ++k) ASSERT_EQ(SobolSecondReversed(1u << k), plain(1u << k)) << k;
+  for (uint i = 0, x = 12345u; i < 100000; ++i, x = HashUint(x))
+    ASSERT_EQ(SobolSecondReversed(x), plain(x)) << x;
+  for (uint i = 0; i < 4096; ++i) ASSERT_EQ(SobolSecondReversed(i), plain(i)) << i;
+}
+
 TEST(Sobol, UnscrambledBlocksAreNets) {
   for (int k = 0; k <= 10; ++k)
     for (uint block : {0u, 1u, 5u, 1000u}) {
