@@ -210,6 +210,9 @@ typedef struct TriangleNormals {
 // --path-estimator mis: the path tracer weighs light samples against BSDF samples (power
 // heuristic), plays pbrt-v4's roulette and follows one lobe per bounce (cl/integrator/path.h).
 #define RT_FLAG_MIS 16384
+// --sampler sobol: every random dimension is an Owen-scrambled Sobol point (cl/sampling/sobol.h)
+// instead of a hash with jittered strata on the camera's (cl/sampling/sampler.h).
+#define RT_FLAG_SOBOL_SAMPLER 32768
 // The bits set_camera sets per camera.
 #define RT_FLAG_PATH_MASK                                                    \
   (RT_FLAG_PATH_TRACING | RT_FLAG_NEXT_EVENT | RT_FLAG_IMPORTANCE_SAMPLING | \

@@ -131,19 +131,22 @@ RT_DEVICE CameraPixel MakeCameraPixel(RT_PRIVATE const SceneData* sd, int x, int
   if (RT_HAS(sd, RT_FEATURE_TEXTURES) && h->background_texture >= 0)
     cp.uv = make_real2((real)x / (real)cam->width, (real)y / (real)cam->height);
   cp.key = MakePixelKey((uint)(y * cam->width + x), (uint)cam->samples, (uint)cam->strata, h->seed);
+  if ((h->flags & RT_FLAG_SOBOL_SAMPLER) != 0) UseSobolSampler(&cp.key);
   // The camera ray's light sample is made with the camera sample where the scene draws one
   // (CacheCameraRaySamples).
   if (RT_HAS(sd, RT_LIGHT_AREA | RT_FEATURE_OBJECT_LIGHTS | RT_LIGHT_ENVIRONMENT))
     CacheCameraRaySamples(&cp.key, RT_CACHE_LIGHT);
   cp.film_strata = cp.lens_strata = cp.time_strata = 0u;
-  // One stratum (one sample per pixel) needs no permutation key (Stratified2DKeyed).
-  if (cam->strata > 1) {
+  // One stratum (one sample per pixel) needs no permutation key (Stratified2DKeyed), nor does
+  // the Sobol sampler.
+  int permuted = cp.key.sobol == 0u;
+  if (permuted && cam->strata > 1) {
     if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE))
       cp.film_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_PIXEL, RT_STRATA_SALT_2D);
     if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD))
       cp.lens_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_LENS, RT_STRATA_SALT_2D);
   }
-  if (RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && cam->samples > 1)
+  if (permuted && RT_HAS(sd, RT_FEATURE_MOTION_BLUR) && cam->samples > 1)
     cp.time_strata = StratumKey(cp.key.hash, cp.key.seed, RT_DIM_TIME, RT_STRATA_SALT_1D);
   cp.course_pixel_size = CourseFilmPixelSize(cam);
   return cp;
@@ -194,9 +197,10 @@ RT_DEVICE_INLINE CameraSample CameraSampleOf(RT_PRIVATE const SceneData* sd,
 RT_DEVICE_INLINE CameraSample GeneratePixelSample(RT_PRIVATE const SceneData* sd,
                                                   RT_PRIVATE const CameraPixel* cp, uint sample) {
   uint film_stratum = 0u, lens_stratum = 0u;
-  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && cp->key.strata > 1u)
+  int permuted = cp->key.strata > 1u && cp->key.sobol == 0u;  // StratumPointOf ignores it else.
+  if (RT_HAS(sd, RT_FEATURE_MULTISAMPLE) && permuted)
     film_stratum = PermutationElement(sample, cp->key.samples, cp->film_strata);
-  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && cp->key.strata > 1u)
+  if (RT_HAS(sd, RT_FEATURE_DEPTH_OF_FIELD) && permuted)
     lens_stratum = PermutationElement(sample, cp->key.samples, cp->lens_strata);
   SampleKey k = PixelSampleKey(cp->key, sample);
   real2 film = make_real2(0.5f, 0.5f), lens = make_real2(0.5f, 0.5f);

@@ -38,25 +38,31 @@ RT_DEVICE void AccumulatePixel(RT_PRIVATE const SceneData* sd, int x, int y, int
   uint stratum[RT_PERMUTATION_BATCH], lens_stratum[RT_PERMUTATION_BATCH];
   for (int k = 0; k < RT_PERMUTATION_BATCH; ++k) stratum[k] = lens_stratum[k] = 0u;
   int batch_rays = CameraBatchRaysMade(sd);
+  int sobol = cp.key.sobol != 0u;
 #endif
   for (int first = begin; first < end; first += RT_CAMERA_BATCH) {
     int n = end - first < RT_CAMERA_BATCH ? end - first : RT_CAMERA_BATCH;
     CameraSample batch[RT_CAMERA_BATCH];
 #if RT_CAMERA_BATCH > 1
-    if (film_strata) PermutationElements((uint)first, n, cp.key.samples, cp.film_strata, stratum);
-    if (lens_strata)
-      PermutationElements((uint)first, n, cp.key.samples, cp.lens_strata, lens_stratum);
-    uint prefix[RT_PERMUTATION_BATCH];
-    real point[4 * RT_PERMUTATION_BATCH];
-    CameraBatchPoints(sd, cp.key, (uint)first, stratum, lens_stratum, prefix, point);
-    real ray[6 * RT_PERMUTATION_BATCH];
-    if (batch_rays) CameraBatchRays(sd, &cp, point, ray);
-    for (int k = 0; k < n; ++k) {
-      const int b = RT_PERMUTATION_BATCH;
-      batch[k] =
-          CameraSampleOf(sd, &cp, PixelSampleKeyOf(cp.key, (uint)(first + k), prefix[k]),
-                         make_real2(point[k], point[b + k]),
-                         make_real2(point[2 * b + k], point[3 * b + k]), batch_rays ? ray : 0, k);
+    if (sobol) {
+      // The Sobol sampler's camera samples have no strata to batch: one at a time.
+      for (int k = 0; k < n; ++k) batch[k] = GeneratePixelSample(sd, &cp, (uint)(first + k));
+    } else {
+      if (film_strata) PermutationElements((uint)first, n, cp.key.samples, cp.film_strata, stratum);
+      if (lens_strata)
+        PermutationElements((uint)first, n, cp.key.samples, cp.lens_strata, lens_stratum);
+      uint prefix[RT_PERMUTATION_BATCH];
+      real point[4 * RT_PERMUTATION_BATCH];
+      CameraBatchPoints(sd, cp.key, (uint)first, stratum, lens_stratum, prefix, point);
+      real ray[6 * RT_PERMUTATION_BATCH];
+      if (batch_rays) CameraBatchRays(sd, &cp, point, ray);
+      for (int k = 0; k < n; ++k) {
+        const int b = RT_PERMUTATION_BATCH;
+        batch[k] =
+            CameraSampleOf(sd, &cp, PixelSampleKeyOf(cp.key, (uint)(first + k), prefix[k]),
+                           make_real2(point[k], point[b + k]),
+                           make_real2(point[2 * b + k], point[3 * b + k]), batch_rays ? ray : 0, k);
+      }
     }
 #else
     for (int k = 0; k < n; ++k) batch[k] = GeneratePixelSample(sd, &cp, (uint)(first + k));

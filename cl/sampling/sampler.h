@@ -2,12 +2,17 @@
 // The first camera dimensions are stratified: sample s of an n x n pattern falls in
 // stratum PermutationElement(s), jittered inside it, with a permutation per dimension
 // so the pixel, lens, time and light patterns are decorrelated.
+// With the Sobol sampler (SampleKey.sobol, RT_FLAG_SOBOL_SAMPLER) every dimension, the camera's
+// and each ray's alike, is instead an Owen-scrambled Sobol point of the sample's index
+// (cl/sampling/sobol.h), keyed by (pixel, dimension, seed): stratified in every 2D dimension at
+// every power-of-two prefix of the samples, still a pure function of the key.
 #ifndef RT_SAMPLER_H
 #define RT_SAMPLER_H
 
 #include "../util/hash.h"
 #include "../util/math.h"
 #include "dimensions.h"
+#include "sobol.h"
 
 // A bit of PixelKey.cached and SampleKey.cached: the key holds the camera ray's first light
 // sample (CacheCameraRaySamples).
@@ -22,7 +27,10 @@ typedef struct SampleKey {
   uint prefix;        // Hash of (pixel, sample, seed): each dimension then costs one round.
   uint strata_magic;  // See StrataMagic.
   uint cached;        // RT_CACHE_* bits (CacheCameraRaySamples).
-  real2 light_u;      // The camera ray's first light sample, under RT_CACHE_LIGHT.
+  // 1: the Sobol sampler; prefix is then the pixel's (SobolPixelPrefix), the same for every
+  // sample, and the sample's index picks the point.
+  uint sobol;
+  real2 light_u;  // The camera ray's first light sample, under RT_CACHE_LIGHT.
 } SampleKey;
 
 // The part of the key every sample of a pixel shares, hashed once per pixel: a sample's
@@ -37,6 +45,7 @@ typedef struct PixelKey {
   // The stratum key of the camera ray's light sample: the camera ray's key is the same for
   // every sample of the pixel, so it is a per-pixel constant.
   uint light_strata;
+  uint sobol;  // SampleKey.sobol.
 } PixelKey;
 
 // The keys of the stratum permutations, Hash4(pixel, dimension, seed, salt): one per pixel
@@ -70,15 +79,32 @@ RT_DEVICE real RandomOfPrefix(uint prefix, uint dimension) {
   return UintToUnitFloat(HashCombine(prefix, dimension));
 }
 
-RT_DEVICE real Random1D(SampleKey k, uint dimension) { return RandomOfPrefix(k.prefix, dimension); }
+// The Sobol sampler's number and point of the dimension of key HashCombine(prefix, dimension).
+RT_DEVICE real Sobol1D(uint sample, uint key) {
+  return UintToUnitFloat(SobolScrambledX(SobolShuffledIndex(sample, key), key));
+}
+
+RT_DEVICE real2 Sobol2D(uint sample, uint key) {
+  uint index = SobolShuffledIndex(sample, key);
+  return make_real2(UintToUnitFloat(SobolScrambledX(index, key)),
+                    UintToUnitFloat(SobolScrambledY(index, key)));
+}
+
+RT_DEVICE real Random1D(SampleKey k, uint dimension) {
+  return k.sobol != 0u ? Sobol1D(k.sample, HashCombine(k.prefix, dimension))
+                       : RandomOfPrefix(k.prefix, dimension);
+}
 
 RT_DEVICE real2 Random2D(SampleKey k, uint dimension) {
-  return make_real2(Random1D(k, dimension), Random1D(k, RT_DIM_SECOND(dimension)));
+  if (k.sobol != 0u) return Sobol2D(k.sample, HashCombine(k.prefix, dimension));
+  return make_real2(RandomOfPrefix(k.prefix, dimension),
+                    RandomOfPrefix(k.prefix, RT_DIM_SECOND(dimension)));
 }
 
 // One point of a jittered n x n pattern per sample, in [0, 1)^2, its stratum permuted by
 // `stratum_key` (StratumKey of the dimension); random when the sample count is not a
-// perfect square. One sample per pixel is one stratum, whose point is xi itself
+// perfect square, or Random2D itself under the Sobol sampler, whose points are stratified
+// already. One sample per pixel is one stratum, whose point is xi itself
 // ((0 + xi) * 1, exactly), so the permutation is skipped. StratumPoint2D is the point in
 // stratum `stratum` (the permutation element, made by the caller: cl/integrator/pixel.h makes a
 // batch's film and lens strata at once, PermutationElements). One coordinate of the point of a
@@ -90,7 +116,7 @@ RT_DEVICE real StratumCoordinate(int cell, real xi, real inv) { return ((real)ce
 
 // StratumPointOf is StratumPoint2D with the jitter xi = Random2D(k, dimension) given.
 RT_DEVICE_INLINE real2 StratumPointOf(SampleKey k, real2 xi, uint stratum) {
-  if (k.strata <= 1u) return xi;
+  if (k.strata <= 1u || k.sobol != 0u) return xi;
   real inv = 1.0f / (real)k.strata;
   uint row = StratumRow(stratum, k.strata, k.strata_magic);
   return make_real2(StratumCoordinate((int)(stratum - row * k.strata), xi.x, inv),
@@ -102,27 +128,29 @@ RT_DEVICE_INLINE real2 StratumPoint2D(SampleKey k, uint dimension, uint stratum)
 }
 
 RT_DEVICE_INLINE real2 Stratified2DKeyed(SampleKey k, uint dimension, uint stratum_key) {
-  return StratumPoint2D(k, dimension,
-                        k.strata <= 1u ? 0u : PermutationElement(k.sample, k.samples, stratum_key));
+  return StratumPoint2D(
+      k, dimension,
+      k.strata <= 1u || k.sobol != 0u ? 0u : PermutationElement(k.sample, k.samples, stratum_key));
 }
 
 RT_DEVICE real2 Stratified2D(SampleKey k, uint dimension) {
-  return k.strata == 0u
+  return k.strata == 0u || k.sobol != 0u
              ? Random2D(k, dimension)
              : Stratified2DKeyed(k, dimension,
                                  StratumKey(k.pixel_hash, k.seed, dimension, RT_STRATA_SALT_2D));
 }
 
-// A jittered 1D pattern of `samples` strata (for the shutter time).
+// A jittered 1D pattern of `samples` strata (for the shutter time); the Sobol sampler's
+// number is stratified already.
 RT_DEVICE real Stratified1DKeyed(SampleKey k, uint dimension, uint stratum_key) {
   real xi = Random1D(k, dimension);
-  if (k.samples <= 1u) return xi;
+  if (k.samples <= 1u || k.sobol != 0u) return xi;
   uint stratum = PermutationElement(k.sample, k.samples, stratum_key);
   return ((real)stratum + xi) / (real)k.samples;
 }
 
 RT_DEVICE real Stratified1D(SampleKey k, uint dimension) {
-  return k.samples <= 1u
+  return k.samples <= 1u || k.sobol != 0u
              ? Random1D(k, dimension)
              : Stratified1DKeyed(k, dimension,
                                  StratumKey(k.pixel_hash, k.seed, dimension, RT_STRATA_SALT_1D));
@@ -141,8 +169,12 @@ RT_DEVICE PixelKey MakePixelKey(uint pixel, uint samples, uint strata, uint seed
   p.strata_magic = StrataMagic(strata);
   p.cached = 0u;
   p.light_strata = 0u;
+  p.sobol = 0u;
   return p;
 }
+
+// The pixel key of the Sobol sampler (before CacheCameraRaySamples).
+RT_DEVICE void UseSobolSampler(RT_PRIVATE PixelKey* p) { p->sobol = 1u; }
 
 // For scenes that draw it: makes every sample of the pixel carry its camera ray's first
 // light sample (RT_CACHE_LIGHT). Where RaySample2D drew it, after the camera ray's
@@ -155,7 +187,7 @@ RT_DEVICE PixelKey MakePixelKey(uint pixel, uint samples, uint strata, uint seed
 // few rays that draw it save.
 RT_DEVICE void CacheCameraRaySamples(RT_PRIVATE PixelKey* p, uint which) {
   p->cached = which;
-  if (p->strata > 1u && (which & RT_CACHE_LIGHT) != 0u)
+  if (p->strata > 1u && p->sobol == 0u && (which & RT_CACHE_LIGHT) != 0u)
     p->light_strata = StratumKey(p->hash, p->seed, RT_CAMERA_LIGHT_DIM, RT_STRATA_SALT_2D);
 }
 
@@ -164,7 +196,14 @@ RT_DEVICE uint PixelSamplePrefix(PixelKey p, uint sample) {
   return HashCombine(HashCombine(HashCombine(p.hash, sample), p.seed), 0x3c6ef372u);
 }
 
-// Sample `sample` of the pixel, whose prefix is PixelSamplePrefix(p, sample).
+// The Sobol sampler's prefix, Hash3(pixel, seed, 0x9b05688cu): the sample's index, not its
+// prefix, tells its samples apart.
+RT_DEVICE uint SobolPixelPrefix(PixelKey p) {
+  return HashCombine(HashCombine(p.hash, p.seed), 0x9b05688cu);
+}
+
+// Sample `sample` of the pixel, whose prefix is PixelSamplePrefix(p, sample) (SobolPixelPrefix
+// under the Sobol sampler).
 RT_DEVICE SampleKey PixelSampleKeyOf(PixelKey p, uint sample, uint prefix) {
   SampleKey k;
   k.pixel_hash = p.hash;
@@ -175,6 +214,7 @@ RT_DEVICE SampleKey PixelSampleKeyOf(PixelKey p, uint sample, uint prefix) {
   k.prefix = prefix;
   k.strata_magic = p.strata_magic;
   k.cached = p.cached;
+  k.sobol = p.sobol;
   k.light_u = make_real2(0.0f, 0.0f);
   // Stratified2DKeyed is Stratified2D with the stratum key given (and Random2D without
   // strata, which leaves the key unread).
@@ -184,7 +224,8 @@ RT_DEVICE SampleKey PixelSampleKeyOf(PixelKey p, uint sample, uint prefix) {
 }
 
 RT_DEVICE SampleKey PixelSampleKey(PixelKey p, uint sample) {
-  return PixelSampleKeyOf(p, sample, PixelSamplePrefix(p, sample));
+  return PixelSampleKeyOf(p, sample,
+                          p.sobol != 0u ? SobolPixelPrefix(p) : PixelSamplePrefix(p, sample));
 }
 
 RT_DEVICE SampleKey MakeSampleKey(uint pixel, uint sample, uint samples, uint strata, uint seed) {

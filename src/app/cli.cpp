@@ -14,6 +14,17 @@ OptionTable<RenderOptions> make_device_table() {
       .default_is("NumSamples")
       .integer("--seed", "N", Range::closed(0, 4294967295.0), RT_FIELD(seed),
                "random stream; equal seeds give equal images, bit for bit")
+      .choice("--sampler",
+              std::vector<std::pair<std::string, SamplerChoice>>{
+                  {"auto", SamplerChoice::kAuto},
+                  {"independent", SamplerChoice::kIndependent},
+                  {"sobol", SamplerChoice::kSobol}},
+              RT_FIELD(sampler),
+              "where each sample's random numbers come from: independent: a hash per "
+              "dimension, the camera's jittered in strata when the spp is a square; sobol: "
+              "every dimension an Owen-scrambled Sobol point (stratified at every power-of-two "
+              "spp; less noise for the same samples); auto: sobol for path-traced cameras under "
+              "--path-estimator mis, independent elsewhere (the course's images)")
       .choice("--filter",
               std::vector<std::pair<std::string, int>>{{"box", RT_FILTER_BOX},
                                                        {"gaussian", RT_FILTER_GAUSSIAN}},

@@ -24,6 +24,11 @@ struct StopRule {
 // The rule for one camera: the options' rule, with the floor of its film's noise.
 StopRule camera_stop_rule(const StopRule& options, const CameraDesc& camera);
 
+// --sampler: where a sample's random numbers come from (cl/sampling/sampler.h). kAuto is
+// sobol for path-traced cameras under --path-estimator mis, else the independent sampler
+// (sobol_sampler in prepare_camera.cpp).
+enum class SamplerChoice { kAuto, kIndependent, kSobol };
+
 struct RenderOptions {
   uint32_t seed = 0;
   int spp = 0;  // Overrides the camera's NumSamples when > 0.
@@ -42,6 +47,7 @@ struct RenderOptions {
   bool exact_camera_rays = false;  // Not the course's float camera rays (camera.h).
   bool geometric_offset = false;   // Shadow rays leave along ng, not the course's n.
   bool ray_hit_point = true;       // Hit point o + t d, as the course; off: the primitive.
+  SamplerChoice sampler = SamplerChoice::kAuto;
   bool fast_math = false;          // OpenCL: -cl-fast-relaxed-math (the CPU stays precise).
   // The devices work in the camera's frame (src/prepare/world_frame.h). Off: in the world's, for
   // tests that trace rays given in world coordinates.

@@ -66,6 +66,15 @@ void set_camera(Camera& cam, const CameraDesc& c, Vec3d origin, const RenderOpti
   cam.strata = root * root == cam.samples ? root : 0;
 }
 
+// Whether camera `c` draws its numbers from the scrambled Sobol sequence (RT_FLAG_SOBOL_SAMPLER):
+// --sampler sobol, or auto for a path-traced camera under --path-estimator mis (the estimator
+// meant for converging soonest); elsewhere auto keeps the independent sampler, whose images
+// the course's references and every earlier render match.
+bool sobol_sampler(const RenderOptions& options, const CameraDesc& c) {
+  if (options.sampler == SamplerChoice::kAuto) return c.path_tracing && options.mis;
+  return options.sampler == SamplerChoice::kSobol;
+}
+
 // The header's settings from the scene, the options and the camera (set_camera's).
 void set_header(SceneHeader& h, const SceneDesc& scene, const CameraDesc& c,
                 const RenderOptions& options) {
@@ -91,7 +100,8 @@ void set_header(SceneHeader& h, const SceneDesc& scene, const CameraDesc& c,
             (c.path_tracing ? RT_FLAG_PATH_TRACING | c.path_flags : 0) |
             // The weights need the light samples' true densities: exact ellipsoid lights.
             (c.path_tracing && options.mis ? RT_FLAG_MIS | RT_FLAG_EXACT_ELLIPSOID_LIGHTS : 0) |
-            (course_camera ? RT_FLAG_COURSE_CAMERA : 0);
+            (course_camera ? RT_FLAG_COURSE_CAMERA : 0) |
+            (sobol_sampler(options, c) ? RT_FLAG_SOBOL_SAMPLER : 0);
 }
 
 // The feature bits (cl/features.h) of what `f` holds: its placed instances, their
