@@ -132,7 +132,7 @@ case "$case" in
         cp run/simple.png run/simple.moments.exr copy/ 2> /dev/null
         cp run/simple.png.rtcheckpoint copy/ 2> /dev/null
         spp=$(head -c 4096 copy/simple.png.rtcheckpoint 2> /dev/null | grep -a '^spp ' | cut -d' ' -f2)
-        [ -n "$spp" ] && [ "$spp" -gt 0 ] && break
+        [ -e copy/simple.png ] && [ -n "$spp" ] && [ "$spp" -gt 0 ] && break
       fi
       kill -0 "$pid" 2> /dev/null || fail "the job ended before a checkpoint with samples: $(cat run.err)"
       sleep 0.01

@@ -108,7 +108,7 @@ TEST_F(CliInputWords, MisspeltElementGetsDidYouMean) {
 }
 
 TEST_F(CliInputWords, MisspeltOptionGetsDidYouMean) {
-  usage("--sammples 4", {"unknown option '--sammples'; did you mean --spp?"});
+  usage("--filtre box", {"unknown option '--filtre'; did you mean --filter?"});
   usage("--quite", {"did you mean --quiet?"});
   usage("--output-dri x", {"did you mean --output-dir?"});
 }
