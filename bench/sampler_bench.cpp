@@ -53,13 +53,7 @@ Args Parse(int argc, char** argv) {
 int main(int argc, char** argv) {
   Args a = Parse(argc, argv);
   try {
-    rt::SceneDesc scene = rt::load_scene(a.scene);
-    if (a.camera >= static_cast<int>(scene.cameras.size()))
-      throw std::runtime_error(a.scene + ": no camera " + std::to_string(a.camera));
-    for (auto& cam : scene.cameras) {
-      cam.width = std::max(1, static_cast<int>(std::lround(cam.width * a.scale)));
-      cam.height = std::max(1, static_cast<int>(std::lround(cam.height * a.scale)));
-    }
+    rt::SceneDesc scene = sweep::LoadScaledScene(a.scene, a.camera, a.scale);
     const rt::CameraDesc& cam = scene.cameras[a.camera];
     rt::DevicePool devices;
     sweep::Config ref_config{"reference", "reference", "cpu", {}, false, -1};

@@ -4,6 +4,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -147,6 +148,17 @@ double LoadAverage() {
   double load = -1;
   f >> load;
   return f ? load : -1.0;
+}
+
+rt::SceneDesc LoadScaledScene(const std::string& path, int camera, double scale) {
+  rt::SceneDesc scene = rt::load_scene(path);
+  if (camera >= static_cast<int>(scene.cameras.size()))
+    throw std::runtime_error(path + ": no camera " + std::to_string(camera));
+  for (auto& cam : scene.cameras) {
+    cam.width = std::max(1, static_cast<int>(std::lround(cam.width * scale)));
+    cam.height = std::max(1, static_cast<int>(std::lround(cam.height * scale)));
+  }
+  return scene;
 }
 
 }  // namespace sweep

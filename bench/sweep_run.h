@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "device/device.h"
-#include "io/moments.h"
 #include "integrator/render.h"
+#include "io/moments.h"
 #include "scene/scene.h"
 
 namespace sweep {
@@ -51,6 +51,10 @@ Reference ConvergedReference(const std::string& scene_path, rt::SceneDesc& scene
 
 // The default cache: $XDG_CACHE_HOME/raytracer/sweep, else $HOME/.cache/raytracer/sweep.
 std::string DefaultCacheDir();
+
+// The scene file at `path` with every camera's resolution scaled by `scale` (rounded, at
+// least 1 pixel); throws when it has no camera `camera`.
+rt::SceneDesc LoadScaledScene(const std::string& path, int camera, double scale);
 
 // rt::relative_mse without the largest `share` of its per-value terms. A path tracer's
 // error is heavy-tailed (a vertex near the point light, a rare caustic): over 64x64 pixels
